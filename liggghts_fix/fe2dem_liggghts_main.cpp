@@ -1,0 +1,23 @@
+// fe2dem-liggghts: Debian's `liggghts` command with FE2DEM's styles
+// registered. Same command line (-in, -var, -echo, -log, -screen, ...).
+#include "lammps.h"
+#include "input.h"
+#include "register_styles.h"
+#include "quiet_stdout.h"
+
+#include <mpi.h>
+
+int main(int argc, char** argv)
+{
+  MPI_Init(&argc, &argv);
+  LAMMPS_NS::LAMMPS* lmp = nullptr;
+  {
+    fe2dem::QuietStdout quiet; // hides Debian's "Style collision" chatter
+    lmp = new LAMMPS_NS::LAMMPS(argc, argv, MPI_COMM_WORLD);
+  }
+  fe2dem::register_styles(lmp);
+  lmp->input->file();
+  delete lmp;
+  MPI_Finalize();
+  return 0;
+}

@@ -1,0 +1,597 @@
+// fix rve/servo: construction, keywords, checks, time integration, output.
+// The servo state machine and homogenisation live in fix_rve_servo_solve.cpp.
+#include "fix_rve_servo.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "compute.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "group.h"
+#include "input.h"
+#include "modify.h"
+#include "update.h"
+#include "variable.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+#include <stdexcept>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+using namespace fe2dem;
+
+namespace
+{
+double sign(double v) { return (v > 0.0) - (v < 0.0); }
+
+bool parse_double(const char* s, double& out)
+{
+  char* end = nullptr;
+  out = std::strtod(s, &end);
+  return end != s && *end == '\0' && std::isfinite(out);
+}
+} // namespace
+
+FixRveServo::FixRveServo(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg)
+{
+  vector_flag = 1;
+  size_vector = 38;
+  global_freq = 1;
+  extvector = 0;
+  time_integrate = 1;
+  nevery = 1;
+  F_input_ = {"1", "0", "0", "1"};
+  parse_arguments(narg, arg);
+}
+
+FixRveServo::~FixRveServo()
+{
+  if (contacts_compute_ && modify->find_compute(contacts_compute_id_.c_str()) >= 0)
+    modify->delete_compute(contacts_compute_id_.c_str());
+}
+
+int FixRveServo::setmask()
+{
+  return INITIAL_INTEGRATE | POST_FORCE | FINAL_INTEGRATE | END_OF_STEP;
+}
+
+void FixRveServo::parse_arguments(int narg, char** arg)
+{
+  auto need = [&](int iarg, int n, const char* keyword) {
+    if (iarg + n >= narg)
+    {
+      std::string msg = std::string("keyword '") + keyword + "' needs " + std::to_string(n) +
+                        " value(s)";
+      error->fix_error(FLERR, this, msg.c_str());
+    }
+  };
+  auto number = [&](const char* keyword, const char* value, double lo, bool lo_open) {
+    double v = 0.0;
+    if (!parse_double(value, v) || (lo_open ? v <= lo : v < lo))
+    {
+      std::string msg = std::string("keyword '") + keyword + "': value '" + value +
+                        "' must be a number " + (lo_open ? "> " : ">= ") + std::to_string(lo);
+      error->fix_error(FLERR, this, msg.c_str());
+    }
+    return v;
+  };
+  auto choice = [&](const char* keyword, const char* value, const char* a, const char* b) {
+    if (std::strcmp(value, a) == 0)
+      return true;
+    if (std::strcmp(value, b) == 0)
+      return false;
+    std::string msg = std::string("keyword '") + keyword + "': value '" + value + "' must be '" +
+                      a + "' or '" + b + "'";
+    error->fix_error(FLERR, this, msg.c_str());
+    return false;
+  };
+
+  bool have_frame = false, have_cell = false;
+  for (int iarg = 3; iarg < narg; )
+  {
+    const char* kw = arg[iarg];
+    if (std::strcmp(kw, "frame") == 0)
+    {
+      need(iarg, 1, kw);
+      frame_group_ = arg[iarg + 1];
+      const int ig = group->find(arg[iarg + 1]);
+      if (ig < 0)
+      {
+        std::string msg = std::string("keyword 'frame': group '") + arg[iarg + 1] +
+                          "' does not exist; define it first, e.g. 'group frame type 2'";
+        error->fix_error(FLERR, this, msg.c_str());
+      }
+      frame_groupbit_ = group->bitmask[ig];
+      have_frame = true;
+      iarg += 2;
+    }
+    else if (std::strcmp(kw, "cell") == 0)
+    {
+      need(iarg, 2, kw);
+      Lx_ = number(kw, arg[iarg + 1], 0.0, true);
+      Ly_ = number(kw, arg[iarg + 2], 0.0, true);
+      have_cell = true;
+      iarg += 3;
+    }
+    else if (std::strcmp(kw, "F") == 0)
+    {
+      need(iarg, 4, kw);
+      parse_deformation(&arg[iarg + 1], "keyword 'F'");
+      iarg += 5;
+    }
+    else if (std::strcmp(kw, "damping") == 0)
+    {
+      need(iarg, 2, kw);
+      alpha_ = number(kw, arg[iarg + 1], 0.0, false);
+      beta_ = number(kw, arg[iarg + 2], 0.0, false);
+      if (alpha_ >= 1.0 || beta_ >= 1.0)
+        error->fix_error(FLERR, this, "keyword 'damping': values must be < 1 (0.7 is usual)");
+      iarg += 3;
+    }
+    else if (std::strcmp(kw, "rotation") == 0)
+    {
+      need(iarg, 1, kw);
+      lock_rotation_ = !choice(kw, arg[iarg + 1], "free", "locked");
+      iarg += 2;
+    }
+    else if (std::strcmp(kw, "inertia") == 0)
+    {
+      need(iarg, 1, kw);
+      inertia_factor_ = choice(kw, arg[iarg + 1], "disc", "sphere") ? 0.5 : 0.4;
+      iarg += 2;
+    }
+    else if (std::strcmp(kw, "gains") == 0)
+    {
+      need(iarg, 2, kw);
+      gain_a_ = number(kw, arg[iarg + 1], 0.0, true);
+      gain_m_ = number(kw, arg[iarg + 2], 0.0, true);
+      iarg += 3;
+    }
+    else if (std::strcmp(kw, "relax") == 0)
+    {
+      need(iarg, 2, kw);
+      criterion_unbalanced_ = !choice(kw, arg[iarg + 1], "ekin_epot", "unbalanced");
+      relax_tol_ = number(kw, arg[iarg + 2], 0.0, true);
+      iarg += 3;
+    }
+    else if (std::strcmp(kw, "servo_tol") == 0)
+    {
+      need(iarg, 1, kw);
+      servo_tol_ = number(kw, arg[iarg + 1], 0.0, true);
+      iarg += 2;
+    }
+    else if (std::strcmp(kw, "check_every") == 0)
+    {
+      need(iarg, 1, kw);
+      check_every_ = static_cast<int>(number(kw, arg[iarg + 1], 1.0, false));
+      iarg += 2;
+    }
+    else if (std::strcmp(kw, "max_steps") == 0)
+    {
+      need(iarg, 1, kw);
+      max_steps_ = static_cast<long>(number(kw, arg[iarg + 1], 1.0, false));
+      iarg += 2;
+    }
+    else if (std::strcmp(kw, "start") == 0)
+    {
+      need(iarg, 1, kw);
+      keep_fluctuations_ = choice(kw, arg[iarg + 1], "keep", "reset");
+      iarg += 2;
+    }
+    else if (std::strcmp(kw, "move_rate") == 0)
+    {
+      need(iarg, 1, kw);
+      move_rate_ = number(kw, arg[iarg + 1], 0.0, true);
+      iarg += 2;
+    }
+    else if (std::strcmp(kw, "on_failure") == 0)
+    {
+      need(iarg, 1, kw);
+      error_on_failure_ = choice(kw, arg[iarg + 1], "error", "flag");
+      iarg += 2;
+    }
+    else
+    {
+      std::string msg = std::string("unknown keyword '") + kw +
+                        "'; known: frame cell F damping rotation inertia gains relax servo_tol "
+                        "check_every max_steps start move_rate on_failure";
+      error->fix_error(FLERR, this, msg.c_str());
+    }
+  }
+  if (!have_frame)
+    error->fix_error(FLERR, this, "keyword 'frame GROUP' is required (the boundary particles)");
+  if (!have_cell)
+    error->fix_error(FLERR, this, "keyword 'cell Lx Ly' is required (reference cell size)");
+}
+
+void FixRveServo::parse_deformation(char** arg, const char* where)
+{
+  for (int k = 0; k < 4; ++k)
+  {
+    double v;
+    if (std::strncmp(arg[k], "v_", 2) != 0 && !parse_double(arg[k], v))
+    {
+      std::string msg = std::string(where) + ": value '" + arg[k] +
+                        "' is neither a number nor an equal-style variable v_name";
+      error->fix_error(FLERR, this, msg.c_str());
+    }
+    F_input_[k] = arg[k];
+  }
+}
+
+Mat2 FixRveServo::evaluate_deformation()
+{
+  Mat2 F{};
+  for (int k = 0; k < 4; ++k)
+  {
+    const std::string& s = F_input_[k];
+    if (s.compare(0, 2, "v_") == 0)
+    {
+      std::string name = s.substr(2);
+      const int ivar = input->variable->find(&name[0]);
+      if (ivar < 0)
+      {
+        std::string msg = "keyword 'F': variable '" + s.substr(2) + "' does not exist";
+        error->fix_error(FLERR, this, msg.c_str());
+      }
+      F[k] = input->variable->compute_equal(ivar);
+    }
+    else
+      F[k] = std::atof(s.c_str());
+  }
+  if (!(fe2dem::det(F) > 0.0))
+  {
+    std::ostringstream msg;
+    msg << "keyword 'F': det F = " << fe2dem::det(F) << " must be > 0 (F = " << F[0] << " "
+        << F[1] << " " << F[2] << " " << F[3] << ")";
+    error->fix_error(FLERR, this, msg.str().c_str());
+  }
+  return F;
+}
+
+void FixRveServo::post_create()
+{
+  if (domain->dimension != 2)
+    error->fix_error(FLERR, this, "only 'dimension 2' is implemented; the 3D frame is future work");
+  if (comm->nprocs != 1)
+    error->fix_error(FLERR, this, "one RVE runs on one process; run LIGGGHTS on MPI_COMM_SELF");
+  if (!atom->sphere_flag)
+    error->fix_error(FLERR, this, "requires 'atom_style sphere'");
+  if (atom->map_style == 0)
+    error->fix_error(FLERR, this, "requires 'atom_modify map array' before the atoms are read");
+  if (update->ntimestep != 0)
+    error->fix_error(FLERR, this, "must be defined before the first run (reference frame = current "
+                                  "positions at definition)");
+
+  // Frame topology from the positions at definition time: they are the reference X.
+  std::vector<int> tags;
+  std::vector<Vec2> X;
+  std::vector<double> R;
+  r_min_ = 1e300;
+  r_max_ = 0.0;
+  int max_tag = 0;
+  for (int i = 0; i < atom->nlocal; ++i)
+  {
+    max_tag = std::max(max_tag, atom->tag[i]);
+    r_min_ = std::min(r_min_, atom->radius[i]);
+    r_max_ = std::max(r_max_, atom->radius[i]);
+    if (atom->mask[i] & frame_groupbit_)
+    {
+      tags.push_back(atom->tag[i]);
+      X.push_back({atom->x[i][0], atom->x[i][1]});
+      R.push_back(atom->radius[i]);
+    }
+  }
+  try
+  {
+    frame_ = fe2dem::build_frame_topology(tags, X, R, Lx_, Ly_, 1e-6 * r_min_);
+  }
+  catch (const std::exception& e)
+  {
+    std::string msg = std::string("group '") + frame_group_ + "': " + e.what();
+    error->fix_error(FLERR, this, msg.c_str());
+  }
+
+  n_particles_ = atom->nlocal;
+  tag_to_dense_.assign(max_tag + 1, -1);
+  for (int i = 0; i < atom->nlocal; ++i)
+    tag_to_dense_[atom->tag[i]] = i;
+  // Area inside the periodic cell: inner particles whole, one per edge pair, one corner.
+  area_particles_ = 0.0;
+  for (int i = 0; i < atom->nlocal; ++i)
+    if (!(atom->mask[i] & frame_groupbit_))
+      area_particles_ += M_PI * atom->radius[i] * atom->radius[i];
+  for (const auto& p : frame_.pairs)
+    area_particles_ += M_PI * std::pow(frame_.particles[p[0]].radius, 2);
+  area_particles_ += M_PI * std::pow(frame_.particles[frame_.corners[0]].radius, 2);
+
+  const std::size_t nq = frame_.particles.size(), ne = frame_.pairs.size();
+  w_.assign(ne, {0.0, 0.0});
+  theta_pair_.assign(ne, 0.0);
+  theta_frame_.assign(nq, 0.0);
+  frame_force_.assign(nq, {0.0, 0.0});
+  frame_moment_.assign(nq, 0.0);
+
+  // Per-contact data (forces, branch vectors) come from LIGGGHTS' own
+  // compute, which re-evaluates the pair style read-only (no history update).
+  contacts_compute_id_ = std::string(id) + "_contacts";
+  std::vector<std::string> cargs = {contacts_compute_id_, "all", "pair/gran/local", "pos", "id",
+                                    "force"};
+  std::vector<char*> cargv;
+  for (auto& s : cargs)
+    cargv.push_back(&s[0]);
+  modify->add_compute(static_cast<int>(cargv.size()), cargv.data());
+  contacts_compute_ = modify->compute[modify->find_compute(contacts_compute_id_.c_str())];
+}
+
+void FixRveServo::lookup_contact_law()
+{
+  const int nt = atom->ntypes;
+  auto value = [&](const char* name) {
+    Fix* f = modify->find_fix_property(name, "property/global", "peratomtypepair", nt, nt, style,
+                                       false);
+    return f ? f->compute_array(0, 0) : -1.0;
+  };
+  law_.kn = std::max(0.0, value("kn"));
+  law_.kt = std::max(0.0, value("kt"));
+  law_.friction = value("coefficientFriction");
+}
+
+void FixRveServo::init()
+{
+  dtv_ = update->dt;
+  dtf_ = 0.5 * update->dt * force->ftm2v;
+  lookup_contact_law();
+  error_checks();
+  if (solve_pending_)
+    begin_solve();
+}
+
+void FixRveServo::error_checks()
+{
+  if (force->pair == nullptr || force->pair_match("gran", 0) == nullptr)
+    error->fix_error(FLERR, this, "requires a granular pair style (pair_style gran ...)");
+  for (int i = 0; i < modify->nfix; ++i)
+    if (modify->fix[i] != this && modify->fix[i]->time_integrate &&
+        (modify->fix[i]->groupbit & groupbit))
+    {
+      std::string msg = std::string("fix '") + modify->fix[i]->id + "' (" +
+                        modify->fix[i]->style +
+                        ") also integrates these particles; rve/servo integrates them itself";
+      error->fix_error(FLERR, this, msg.c_str());
+    }
+  if (!criterion_unbalanced_ && !(law_.kn > 0.0 && law_.kt > 0.0))
+    error->fix_error(FLERR, this, "keyword 'relax ekin_epot' needs the contact stiffnesses 'kn' and "
+                                  "'kt' (fix property/global, hooke/stiffness); use 'relax "
+                                  "unbalanced' for other contact laws");
+  // Critical step (physics.md §2.7) of the lightest particle, single contact.
+  if (law_.kn > 0.0)
+  {
+    double m_min = 1e300;
+    for (int i = 0; i < atom->nlocal; ++i)
+      m_min = std::min(m_min, atom->rmass[i]);
+    const double w_n = std::sqrt(law_.kn / m_min);
+    const double w_r = law_.kt > 0.0 ? std::sqrt(law_.kt / (inertia_factor_ * m_min)) : 0.0;
+    const double dt_crit = 2.0 / std::max(w_n, w_r);
+    if (update->dt > dt_crit)
+    {
+      std::ostringstream msg;
+      msg << "timestep " << update->dt << " is above the critical step " << dt_crit
+          << " (kn = " << law_.kn << ", kt = " << law_.kt << ", lightest mass " << m_min
+          << "); reduce 'timestep' below it (a fifth of it is usual)";
+      error->fix_error(FLERR, this, msg.str().c_str());
+    }
+  }
+}
+
+double FixRveServo::inertia_of(int i) const
+{
+  return inertia_factor_ * atom->rmass[i] * atom->radius[i] * atom->radius[i];
+}
+
+int FixRveServo::local_index(int tag) const
+{
+  const int i = atom->map(tag);
+  if (i < 0 || i >= atom->nlocal)
+  {
+    std::string msg = "particle id " + std::to_string(tag) + " was lost";
+    error->one(FLERR, msg.c_str());
+  }
+  return i;
+}
+
+void FixRveServo::setup(int vflag)
+{
+  post_force(vflag);
+}
+
+void FixRveServo::initial_integrate(int)
+{
+  double** x = atom->x;
+  double** v = atom->v;
+  double** f = atom->f;
+  double** omega = atom->omega;
+  double** torque = atom->torque;
+  const int* mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; ++i)
+  {
+    if (!(mask[i] & groupbit) || (mask[i] & frame_groupbit_))
+      continue;
+    const double dtfm = dtf_ / atom->rmass[i];
+    v[i][0] += dtfm * f[i][0];
+    v[i][1] += dtfm * f[i][1];
+    x[i][0] += dtv_ * v[i][0];
+    x[i][1] += dtv_ * v[i][1];
+    if (lock_rotation_)
+      omega[i][2] = 0.0;
+    else
+      omega[i][2] += dtf_ / inertia_of(i) * torque[i][2];
+  }
+
+  // Frame: prescribed velocities; positions interpolated so that the end
+  // of a move lands exactly on the target.
+  const bool moving = move_done_ < move_steps_;
+  if (moving)
+    ++move_done_;
+  const double s = moving ? static_cast<double>(move_done_) / move_steps_ : 0.0;
+  const double inv_t = moving ? 1.0 / (move_steps_ * dtv_) : 0.0;
+  for (std::size_t q = 0; q < frame_.particles.size(); ++q)
+  {
+    const int i = local_index(frame_.particles[q].tag);
+    if (moving)
+    {
+      const Vec2 d = move_target_[q] - move_start_[q];
+      const Vec2 xq = move_done_ == move_steps_ ? move_target_[q] : move_start_[q] + s * d;
+      x[i][0] = frame_.origin[0] + xq[0];
+      x[i][1] = frame_.origin[1] + xq[1];
+      v[i][0] = d[0] * inv_t;
+      v[i][1] = d[1] * inv_t;
+      const double dth = rot_target_[q] - rot_start_[q];
+      omega[i][2] = dth * inv_t;
+      theta_frame_[q] = move_done_ == move_steps_ ? rot_target_[q] : rot_start_[q] + s * dth;
+    }
+    else
+    {
+      v[i][0] = v[i][1] = 0.0;
+      omega[i][2] = 0.0;
+    }
+  }
+}
+
+void FixRveServo::post_force(int)
+{
+  double** f = atom->f;
+  double** v = atom->v;
+  double** omega = atom->omega;
+  double** torque = atom->torque;
+  const int* mask = atom->mask;
+
+  for (std::size_t q = 0; q < frame_.particles.size(); ++q)
+  {
+    const int i = local_index(frame_.particles[q].tag);
+    frame_force_[q] = {-f[i][0], -f[i][1]};
+    frame_moment_[q] = -torque[i][2];
+  }
+
+  // Cundall local non-viscous damping (R11) on inner particles.
+  unbalanced_sq_sum_ = 0.0;
+  for (int i = 0; i < atom->nlocal; ++i)
+  {
+    if (!(mask[i] & groupbit) || (mask[i] & frame_groupbit_))
+      continue;
+    unbalanced_sq_sum_ += f[i][0] * f[i][0] + f[i][1] * f[i][1];
+    f[i][0] -= alpha_ * std::abs(f[i][0]) * sign(v[i][0]);
+    f[i][1] -= alpha_ * std::abs(f[i][1]) * sign(v[i][1]);
+    if (lock_rotation_)
+      torque[i][2] = 0.0;
+    else
+      torque[i][2] -= beta_ * std::abs(torque[i][2]) * sign(omega[i][2]);
+  }
+}
+
+void FixRveServo::final_integrate()
+{
+  double** v = atom->v;
+  double** f = atom->f;
+  double** omega = atom->omega;
+  double** torque = atom->torque;
+  const int* mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; ++i)
+  {
+    if (!(mask[i] & groupbit) || (mask[i] & frame_groupbit_))
+      continue;
+    const double dtfm = dtf_ / atom->rmass[i];
+    v[i][0] += dtfm * f[i][0];
+    v[i][1] += dtfm * f[i][1];
+    if (lock_rotation_)
+      omega[i][2] = 0.0;
+    else
+      omega[i][2] += dtf_ / inertia_of(i) * torque[i][2];
+  }
+}
+
+int FixRveServo::modify_param(int narg, char** arg)
+{
+  if (std::strcmp(arg[0], "F") == 0)
+  {
+    if (narg < 5)
+      error->fix_error(FLERR, this, "fix_modify keyword 'F' needs 4 values: F11 F12 F21 F22");
+    parse_deformation(&arg[1], "fix_modify keyword 'F'");
+    begin_solve();
+    return 5;
+  }
+  return 0;
+}
+
+void FixRveServo::set_deformation(const Mat2& F)
+{
+  for (int k = 0; k < 4; ++k)
+  {
+    std::ostringstream s;
+    s.precision(17);
+    s << F[k];
+    F_input_[k] = s.str();
+  }
+  begin_solve();
+}
+
+std::vector<Vec2> FixRveServo::frame_positions() const
+{
+  std::vector<Vec2> xq(frame_.particles.size());
+  for (std::size_t q = 0; q < xq.size(); ++q)
+  {
+    const int i = local_index(frame_.particles[q].tag);
+    xq[q] = Vec2{atom->x[i][0], atom->x[i][1]} - frame_.origin;
+  }
+  return xq;
+}
+
+const char* FixRveServo::status_name(Status s)
+{
+  switch (s)
+  {
+    case running: return "running";
+    case converged: return "converged";
+    case over_budget: return "not converged within max_steps";
+    case escaped: return "particle escaped the frame";
+    case blown_up: return "blow-up (non-finite values)";
+  }
+  return "unknown";
+}
+
+double FixRveServo::compute_vector(int n)
+{
+  const Result& r = result_;
+  auto tensor = [&](const Mat2& A, int k) { return A[k]; };
+  if (n == 0) return status_;
+  if (n == 1) return r.servo_iterations;
+  if (n == 2) return static_cast<double>(r.dem_steps);
+  if (n == 3) return r.residual;
+  if (n == 4) return r.ekin_epot;
+  if (n == 5) return r.unbalanced;
+  if (n < 10) return tensor(r.P, n - 6);
+  if (n < 14) return tensor(r.sigma, n - 10);
+  if (n < 18) return tensor(r.sigma_lw, n - 14);
+  if (n < 22) return tensor(r.F_check, n - 18);
+  if (n == 22) return r.contacts.coordination;
+  if (n == 23) return r.contacts.mechanical_coordination;
+  if (n == 24) return r.contacts.anisotropy;
+  if (n == 25) return r.packing_fraction;
+  if (n == 26) return r.contacts.n_sliding;
+  if (n == 27) return r.contacts.max_overlap;
+  if (n == 28) return r.contacts.n_contacts;
+  if (n == 29) return r.max_inner_omega;
+  if (n < 34) return tensor(r.contacts.fabric, n - 30);
+  return tensor(r.F, n - 34);
+}
+
+double FixRveServo::memory_usage()
+{
+  const double nq = static_cast<double>(frame_.particles.size());
+  return nq * (sizeof(fe2dem::FrameParticle) + 6 * sizeof(Vec2) + 4 * sizeof(double)) +
+         contacts_.capacity() * sizeof(fe2dem::Contact) + tag_to_dense_.capacity() * sizeof(int);
+}

@@ -1,0 +1,189 @@
+/**
+ * @file fix_rve_servo.h
+ * LIGGGHTS fix `rve/servo`: a 2D representative volume element whose frame
+ * of boundary particles is kept periodic under a macro deformation F by a
+ * servo-control loop (physics.md §2.2, §2.5), with Cundall local damping of
+ * the inner particles and stress homogenisation (§2.3, §2.6).
+ *
+ * Syntax:
+ *
+ *     fix ID all rve/servo frame FRAMEGROUP cell Lx Ly [keyword value ...]
+ *
+ *     F f11 f12 f21 f22        macro deformation (numbers or v_name), default I
+ *     damping alpha beta       Cundall damping of force / moment, default 0.7 0.7
+ *     rotation free|locked     inner-particle rotations, default free
+ *     inertia disc|sphere      moment of inertia 0.5 or 0.4 m r^2, default disc
+ *     gains ga gm              dimensionless servo gains g_a M/dt^2, g_m M R^2/dt^2,
+ *                              default 100 200
+ *     relax ekin_epot|unbalanced TOL   criterion (R12) or (R13), default ekin_epot 1e-3
+ *     servo_tol EPS            r_a of (R14) at convergence, default 1e-4
+ *     check_every N            steps between convergence checks, default 50
+ *     max_steps N              step budget of one solve, default 2000000
+ *     start keep|reset         keep or reset frame fluctuations at a new F, default keep
+ *     move_rate FRAC           largest frame move per step / R_min, default 1e-3
+ *     on_failure error|flag    stop LIGGGHTS or only set the status, default error
+ *
+ * `fix_modify ID F f11 f12 f21 f22` starts a new solve under a new F. The
+ * solve advances while the script (or C++) runs steps; f_ID[1] is the status.
+ *
+ * The fix integrates every particle itself (do not add fix nve/sphere):
+ * inner particles by velocity Verlet with local damping, frame particles by
+ * prescribed velocities so that tangential contact history sees the motion.
+ *
+ * Conventions: tension positive; tensors row-major {11, 12, 21, 22};
+ * frame forces a_q are the forces the frame applies to particle q.
+ * Requires `atom_modify map array`, `atom_style sphere`, `dimension 2`, a
+ * granular pair style, and the fix defined before the first run.
+ */
+#ifdef FIX_CLASS
+// Registered at run time by fe2dem::register_styles(), not by LIGGGHTS' style_fix.h.
+#else
+
+#ifndef FE2DEM_FIX_RVE_SERVO_H
+#define FE2DEM_FIX_RVE_SERVO_H
+
+#include "fix.h"
+#include "rve_homogenisation.h"
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS
+{
+class FixRveServo : public Fix
+{
+public:
+  /// Outcome of the current solve. Values are those of f_ID[1].
+  enum Status
+  {
+    running = 0,
+    converged = 1,
+    over_budget = 2,     ///< max_steps reached without convergence
+    escaped = 3,         ///< an inner particle left the frame
+    blown_up = 4         ///< non-finite position, velocity or force
+  };
+
+  /// Everything a solve returns; updated at every convergence check.
+  struct Result
+  {
+    fe2dem::Mat2 F{1, 0, 0, 1}, F_check{1, 0, 0, 1};
+    fe2dem::Mat2 P{}, sigma{}, sigma_lw{}, P_lw{};
+    double residual = 0.0;        ///< r_a (R14)
+    double ekin_epot = 0.0;       ///< (R12) over inner particles
+    double unbalanced = 0.0;      ///< (R13)
+    double packing_fraction = 0.0;
+    double max_inner_omega = 0.0; ///< max |omega| of inner particles
+    int servo_iterations = 0;
+    long dem_steps = 0;           ///< steps of this solve
+    fe2dem::ContactStatistics contacts;
+  };
+
+  FixRveServo(class LAMMPS*, int, char**);
+  ~FixRveServo() override;
+  int setmask() override;
+  void post_create() override;
+  void init() override;
+  void setup(int) override;
+  void initial_integrate(int) override;
+  void post_force(int) override;
+  void final_integrate() override;
+  void end_of_step() override;
+  int modify_param(int, char**) override;
+  double compute_vector(int) override;
+  double memory_usage() override;
+
+  /// Starts a new solve under macro deformation F (row-major).
+  void set_deformation(const fe2dem::Mat2& F);
+  Status status() const { return status_; }
+  static const char* status_name(Status s);
+  const Result& result() const { return result_; }
+  const fe2dem::FrameTopology& frame() const { return frame_; }
+  /// Current frame positions relative to the cell origin, in frame order.
+  std::vector<fe2dem::Vec2> frame_positions() const;
+  /// Forces a_q the frame applied in the last step, in frame order.
+  const std::vector<fe2dem::Vec2>& frame_forces() const { return frame_force_; }
+  /// Frame fluctuations w per edge pair and rotations (pairs, then corners).
+  const std::vector<fe2dem::Vec2>& fluctuations() const { return w_; }
+  /// Steps between checks: C++ drivers run chunks of this length.
+  int check_interval() const { return check_every_; }
+  /// Human-readable reason of the last failure (empty if none).
+  const std::string& failure_reason() const { return failure_reason_; }
+
+private:
+  // --- input -------------------------------------------------------------
+  void parse_arguments(int narg, char** arg);
+  void parse_deformation(char** arg, const char* where);
+  void error_checks();
+  fe2dem::Mat2 evaluate_deformation();
+  void lookup_contact_law();
+
+  // --- servo state machine ----------------------------------------------
+  void begin_solve();
+  void schedule_frame_move();
+  void evaluate_state();
+  double servo_residual() const;
+  void apply_servo_correction();
+  void fail(Status s, const std::string& reason);
+
+  // --- helpers ------------------------------------------------------------
+  int local_index(int tag) const;
+  void collect_contacts();
+  double inertia_of(int i) const;
+
+  // parameters
+  std::string frame_group_;
+  int frame_groupbit_ = 0;
+  double Lx_ = 0.0, Ly_ = 0.0;
+  std::vector<std::string> F_input_; // 4 entries: numbers or v_names
+  double alpha_ = 0.7, beta_ = 0.7;
+  bool lock_rotation_ = false;
+  double inertia_factor_ = 0.5;
+  double gain_a_ = 100.0, gain_m_ = 200.0;
+  bool criterion_unbalanced_ = false;
+  double relax_tol_ = 1e-3;
+  double servo_tol_ = 1e-4;
+  int check_every_ = 50;
+  long max_steps_ = 2000000;
+  bool keep_fluctuations_ = true;
+  double move_rate_ = 1e-3;
+  bool error_on_failure_ = true;
+
+  // frame
+  fe2dem::FrameTopology frame_;
+  double r_min_ = 0.0, r_max_ = 0.0;
+  double area_particles_ = 0.0; ///< particle area inside the periodic cell
+  fe2dem::ContactLaw law_;
+
+  // servo unknowns: fluctuation and rotation per edge pair; common corner rotation
+  std::vector<fe2dem::Vec2> w_;
+  std::vector<double> theta_pair_;
+  double theta_corner_ = 0.0;
+  std::vector<double> theta_frame_; ///< current rotation of each frame particle
+
+  // prescribed frame motion
+  std::vector<fe2dem::Vec2> move_start_, move_target_;
+  std::vector<double> rot_start_, rot_target_;
+  int move_steps_ = 0, move_done_ = 0;
+
+  // per-step records
+  std::vector<fe2dem::Vec2> frame_force_; ///< a_q
+  std::vector<double> frame_moment_;      ///< m_q
+  double unbalanced_sq_sum_ = 0.0;
+
+  // solve state
+  fe2dem::Mat2 F_{1, 0, 0, 1};
+  Status status_ = running;
+  bool solve_pending_ = true;
+  std::string failure_reason_;
+  Result result_;
+  class Compute* contacts_compute_ = nullptr;
+  std::string contacts_compute_id_;
+  std::vector<fe2dem::Contact> contacts_;
+  std::vector<int> tag_to_dense_;
+  int n_particles_ = 0;
+  double dtv_ = 0.0, dtf_ = 0.0;
+};
+} // namespace LAMMPS_NS
+
+#endif
+#endif

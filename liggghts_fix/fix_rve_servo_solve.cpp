@@ -1,0 +1,235 @@
+// fix rve/servo: the servo state machine of physics.md §2.5 and the
+// homogenised results of §2.3/§2.6, evaluated every check_every steps.
+#include "fix_rve_servo.h"
+
+#include "atom.h"
+#include "compute.h"
+#include "error.h"
+#include "update.h"
+
+#include <cmath>
+#include <sstream>
+
+using namespace LAMMPS_NS;
+using namespace fe2dem;
+
+void FixRveServo::begin_solve()
+{
+  F_ = evaluate_deformation();
+  if (!keep_fluctuations_)
+  {
+    for (auto& w : w_)
+      w = {0.0, 0.0};
+    for (auto& t : theta_pair_)
+      t = 0.0;
+    theta_corner_ = 0.0;
+  }
+  status_ = running;
+  failure_reason_.clear();
+  result_.F = F_;
+  result_.servo_iterations = 0;
+  result_.dem_steps = 0;
+  solve_pending_ = false;
+  schedule_frame_move();
+}
+
+// Targets (R2, R3): x_q = F X_q + w_e for both members of pair e, corners
+// exactly at F X_c; one rotation per pair and one for all corners.
+void FixRveServo::schedule_frame_move()
+{
+  const std::size_t nq = frame_.particles.size();
+  move_start_ = frame_positions();
+  move_target_.resize(nq);
+  rot_start_ = theta_frame_;
+  rot_target_.resize(nq);
+  double largest = 0.0;
+  for (std::size_t q = 0; q < nq; ++q)
+  {
+    const fe2dem::FrameParticle& p = frame_.particles[q];
+    move_target_[q] = fe2dem::apply(F_, p.X);
+    rot_target_[q] = theta_corner_;
+    if (p.pair >= 0)
+    {
+      move_target_[q] = move_target_[q] + w_[p.pair];
+      rot_target_[q] = theta_pair_[p.pair];
+    }
+    largest = std::max(largest, fe2dem::norm(move_target_[q] - move_start_[q]));
+    largest = std::max(largest, std::abs(rot_target_[q] - rot_start_[q]) * p.radius);
+  }
+  move_steps_ = std::max(1, static_cast<int>(std::ceil(largest / (move_rate_ * r_min_))));
+  move_done_ = 0;
+}
+
+void FixRveServo::end_of_step()
+{
+  if (status_ != running)
+    return;
+  const long step = ++result_.dem_steps;
+  if (step % check_every_ != 0 && step < max_steps_)
+    return;
+  evaluate_state();
+  if (status_ != running)
+    return;
+  if (move_done_ >= move_steps_)
+  {
+    const bool relaxed = criterion_unbalanced_ ? result_.unbalanced <= relax_tol_
+                                               : result_.ekin_epot <= relax_tol_;
+    if (relaxed)
+    {
+      if (result_.residual <= servo_tol_)
+      {
+        status_ = converged;
+        return;
+      }
+      apply_servo_correction();
+    }
+  }
+  if (step >= max_steps_)
+  {
+    std::ostringstream msg;
+    msg << "no convergence within max_steps = " << max_steps_ << " (r_a = " << result_.residual
+        << ", E_kin/E_pot = " << result_.ekin_epot << ", servo iterations "
+        << result_.servo_iterations << ")";
+    fail(over_budget, msg.str());
+  }
+}
+
+void FixRveServo::fail(Status s, const std::string& reason)
+{
+  status_ = s;
+  failure_reason_ = reason;
+  move_steps_ = move_done_ = 0; // freeze the frame
+  if (error_on_failure_)
+  {
+    std::string msg = std::string(status_name(s)) + ": " + reason;
+    error->fix_error(FLERR, this, msg.c_str());
+  }
+}
+
+void FixRveServo::collect_contacts()
+{
+  contacts_compute_->compute_local();
+  const int rows = contacts_compute_->size_local_rows;
+  double** a = contacts_compute_->array_local;
+  contacts_.resize(rows);
+  for (int r = 0; r < rows; ++r)
+  {
+    // columns: pos (xi, xj), id (i, j, periodic flag), force on i
+    fe2dem::Contact& c = contacts_[r];
+    const int ti = static_cast<int>(a[r][6]), tj = static_cast<int>(a[r][7]);
+    c.i = tag_to_dense_[ti];
+    c.j = tag_to_dense_[tj];
+    c.xi = {a[r][0], a[r][1]};
+    c.xj = {a[r][3], a[r][4]};
+    c.ri = atom->radius[local_index(ti)];
+    c.rj = atom->radius[local_index(tj)];
+    c.force_on_i = {a[r][9], a[r][10]};
+  }
+}
+
+void FixRveServo::evaluate_state()
+{
+  Result& r = result_;
+  double** x = atom->x;
+  double** v = atom->v;
+  double** omega = atom->omega;
+  const int* mask = atom->mask;
+
+  // Kinetic energy, escape and blow-up checks over inner particles.
+  const Mat2 Finv = fe2dem::inverse(F_);
+  const double margin = 2.0 * r_max_;
+  double ekin = 0.0, max_omega = 0.0;
+  int n_inner = 0;
+  for (int i = 0; i < atom->nlocal; ++i)
+  {
+    if (mask[i] & frame_groupbit_)
+      continue;
+    ++n_inner;
+    if (!std::isfinite(x[i][0] + x[i][1] + v[i][0] + v[i][1] + omega[i][2] + atom->f[i][0] +
+                       atom->f[i][1]))
+    {
+      fail(blown_up, "particle id " + std::to_string(atom->tag[i]) +
+                         " has a non-finite position, velocity or force");
+      return;
+    }
+    const Vec2 xi = fe2dem::apply(Finv, Vec2{x[i][0], x[i][1]} - frame_.origin);
+    if (xi[0] < -margin || xi[0] > Lx_ + margin || xi[1] < -margin || xi[1] > Ly_ + margin)
+    {
+      std::ostringstream msg;
+      msg << "inner particle id " << atom->tag[i] << " left the frame: at (" << x[i][0] << ", "
+          << x[i][1] << "), reference-cell coordinates (" << xi[0] << ", " << xi[1] << ")";
+      fail(escaped, msg.str());
+      return;
+    }
+    ekin += 0.5 * atom->rmass[i] * (v[i][0] * v[i][0] + v[i][1] * v[i][1]) +
+            0.5 * inertia_of(i) * omega[i][2] * omega[i][2];
+    max_omega = std::max(max_omega, std::abs(omega[i][2]));
+  }
+
+  collect_contacts();
+  r.contacts = fe2dem::contact_statistics(contacts_, n_particles_, law_);
+  const double V0 = frame_.reference_volume(), J = fe2dem::det(F_);
+  r.F = F_;
+  r.P = fe2dem::boundary_piola(frame_, frame_force_);
+  r.sigma = fe2dem::cauchy_from_piola(r.P, F_);
+  r.sigma_lw = (1.0 / (J * V0)) * r.contacts.love_weber_sum;
+  r.P_lw = J * fe2dem::matmul(r.sigma_lw, fe2dem::transpose(Finv));
+  r.F_check = fe2dem::frame_deformation(frame_, frame_positions());
+  r.ekin_epot = r.contacts.potential_energy > 0.0 ? ekin / r.contacts.potential_energy
+                                                  : (ekin > 0.0 ? 1e300 : 0.0);
+  r.unbalanced = r.contacts.mean_force_sq > 0.0 && n_inner > 0
+                     ? std::sqrt(unbalanced_sq_sum_ / n_inner / r.contacts.mean_force_sq)
+                     : 0.0;
+  r.packing_fraction = area_particles_ / (J * V0);
+  r.max_inner_omega = max_omega;
+  r.residual = servo_residual();
+}
+
+// (R14): residuals of the anti-periodicity of frame forces and moments,
+// scaled by the force and moment that move a particle by R in one step.
+double FixRveServo::servo_residual() const
+{
+  const double dt2 = dtv_ * dtv_;
+  double sum = 0.0;
+  for (const auto& pr : frame_.pairs)
+  {
+    const int i = local_index(frame_.particles[pr[0]].tag);
+    const double M = atom->rmass[i], R = atom->radius[i];
+    const Vec2 da = frame_force_[pr[0]] + frame_force_[pr[1]];
+    const double dm = frame_moment_[pr[0]] + frame_moment_[pr[1]];
+    const double a_scale = M * R / dt2, m_scale = M * R * R / dt2;
+    sum += fe2dem::dot(da, da) / (a_scale * a_scale) + (dm / m_scale) * (dm / m_scale);
+  }
+  const int c = local_index(frame_.particles[frame_.corners[0]].tag);
+  const double Mc = atom->rmass[c], Rc = atom->radius[c];
+  double dmc = 0.0;
+  for (int k : frame_.corners)
+    dmc += frame_moment_[k];
+  sum += std::pow(dmc / (Mc * Rc * Rc / dt2), 2);
+  return std::sqrt(sum);
+}
+
+// Step 4 of the servo: move each pair along its net contact force (and
+// rotate along its net contact moment), i.e. against the residual a_+ + a_-
+// of (R4). Moving along the net contact force is the stable direction.
+void FixRveServo::apply_servo_correction()
+{
+  const double dt2 = dtv_ * dtv_;
+  for (std::size_t e = 0; e < frame_.pairs.size(); ++e)
+  {
+    const auto& pr = frame_.pairs[e];
+    const int i = local_index(frame_.particles[pr[0]].tag);
+    const double M = atom->rmass[i], R = atom->radius[i];
+    const Vec2 da = frame_force_[pr[0]] + frame_force_[pr[1]];
+    const double dm = frame_moment_[pr[0]] + frame_moment_[pr[1]];
+    w_[e] = w_[e] - (gain_a_ * dt2 / M) * da;
+    theta_pair_[e] -= gain_m_ * dt2 / (M * R * R) * dm;
+  }
+  const int c = local_index(frame_.particles[frame_.corners[0]].tag);
+  double dmc = 0.0;
+  for (int k : frame_.corners)
+    dmc += frame_moment_[k];
+  theta_corner_ -= gain_m_ * dt2 / (atom->rmass[c] * std::pow(atom->radius[c], 2)) * dmc;
+  ++result_.servo_iterations;
+  schedule_frame_move();
+}

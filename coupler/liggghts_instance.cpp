@@ -1,0 +1,61 @@
+#include "liggghts_instance.h"
+
+#include "quiet_stdout.h"
+#include "register_styles.h"
+
+#include "fix.h"
+#include "input.h"
+#include "lammps.h"
+#include "modify.h"
+
+#include <stdexcept>
+#include <vector>
+
+namespace fe2dem
+{
+LiggghtsInstance::LiggghtsInstance(MPI_Comm comm, const std::string& log_file, bool screen)
+{
+  std::vector<std::string> args = {"fe2dem", "-log", log_file};
+  if (!screen)
+  {
+    args.push_back("-screen");
+    args.push_back("none");
+  }
+  std::vector<char*> argv;
+  for (auto& a : args)
+    argv.push_back(&a[0]);
+  {
+    QuietStdout quiet; // "Style collision" warnings go to stdout before -screen applies
+    lmp_ = new LAMMPS_NS::LAMMPS(static_cast<int>(argv.size()), argv.data(), comm);
+  }
+  register_styles(lmp_);
+}
+
+LiggghtsInstance::~LiggghtsInstance()
+{
+  QuietStdout quiet;
+  delete lmp_;
+}
+
+void LiggghtsInstance::command(const std::string& line)
+{
+  std::string copy = line;
+  lmp_->input->one(&copy[0]);
+}
+
+void LiggghtsInstance::file(const std::string& path)
+{
+  lmp_->input->file(path.c_str());
+}
+
+void LiggghtsInstance::set_variable(const std::string& name, const std::string& value)
+{
+  command("variable " + name + " index " + value);
+}
+
+void* LiggghtsInstance::find_fix(const std::string& id)
+{
+  const int i = lmp_->modify->find_fix(id.c_str());
+  return i < 0 ? nullptr : lmp_->modify->fix[i];
+}
+} // namespace fe2dem

@@ -1,0 +1,203 @@
+#include "rve_parameters.h"
+
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+namespace fe2dem::rve_driver
+{
+using dealii::Patterns::Anything;
+using dealii::Patterns::Double;
+using dealii::Patterns::Integer;
+using dealii::Patterns::Selection;
+
+namespace
+{
+/// Paths in a parameter file are relative to that file's directory.
+std::string resolve(const std::string& base_dir, const std::string& path)
+{
+  if (path.empty() || std::filesystem::path(path).is_absolute())
+    return path;
+  return (std::filesystem::path(base_dir) / path).lexically_normal().string();
+}
+
+void require_file(const std::string& file, const std::string& entry, const std::string& prm)
+{
+  if (!std::filesystem::is_regular_file(file))
+    throw std::runtime_error(prm + ": " + entry + " = '" + file +
+                             "' does not exist or is not a file; give a path relative to the "
+                             "parameter file or an absolute one");
+}
+
+std::string number(double v)
+{
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+} // namespace
+
+void RveParameters::declare_parameters(dealii::ParameterHandler& prm)
+{
+  prm.enter_subsection("RVE");
+  prm.declare_entry("Template", "../rve_setup_2d.liggghts", Anything(),
+                    "LIGGGHTS RVE set-up script (defines fix rve/servo with ID 'rve'). Relative "
+                    "paths are relative to this parameter file.");
+  prm.declare_entry("Packing", "../packings/lbs_ref", Anything(),
+                    "RVE packing prefix: PREFIX.rve.data and PREFIX.vars made by "
+                    "rve_templates/build_frame.py.");
+  prm.declare_entry("Friction", "0.4", Double(0.0), "Coulomb friction coefficient mu.");
+  prm.declare_entry("Normal stiffness", "1e7", Double(0.0), "Contact stiffness k_n [N/m], > 0.");
+  prm.declare_entry("Tangential stiffness", "2e6", Double(0.0),
+                    "Contact stiffness k_s [N/m], > 0.");
+  prm.declare_entry("Time step", "1e-6", Double(0.0),
+                    "DEM time step [s], > 0 and below the critical step.");
+  prm.declare_entry("Local damping force", "0.7", Double(0.0, 0.999),
+                    "Cundall local damping alpha of forces (R11).");
+  prm.declare_entry("Local damping moment", "0.7", Double(0.0, 0.999),
+                    "Cundall local damping beta of moments (R11).");
+  prm.declare_entry("Rotation", "free", Selection("free|locked"),
+                    "Rotation of inner particles: free, or locked (theta = 0).");
+  prm.declare_entry("Start", "keep", Selection("keep|reset"),
+                    "At a new F, keep the frame fluctuations of the previous solve or reset "
+                    "them to zero.");
+  prm.declare_entry("Relaxation criterion", "ekin_epot", Selection("ekin_epot|unbalanced"),
+                    "E_kin/E_pot (R12) or the unbalanced-force index (R13).");
+  prm.declare_entry("Relaxation tolerance", "1e-3", Double(0.0),
+                    "Tolerance of the relaxation criterion, > 0.");
+  prm.declare_entry("Servo tolerance", "1e-4", Double(0.0), "Servo residual r_a (R14), > 0.");
+  prm.declare_entry("Force gain", "100", Double(0.0), "Dimensionless servo gain g_a M/dt^2.");
+  prm.declare_entry("Moment gain", "200", Double(0.0),
+                    "Dimensionless servo gain g_m M R^2/dt^2.");
+  prm.declare_entry("Check interval", "50", Integer(1),
+                    "DEM steps between convergence checks (and C++ run chunk length).");
+  prm.declare_entry("Step budget", "2000000", Integer(1),
+                    "Largest number of DEM steps one RVE solve may take.");
+  prm.leave_subsection();
+}
+
+void RveParameters::parse_parameters(dealii::ParameterHandler& prm, const std::string& base_dir)
+{
+  prm.enter_subsection("RVE");
+  template_file = resolve(base_dir, prm.get("Template"));
+  packing = resolve(base_dir, prm.get("Packing"));
+  friction = prm.get_double("Friction");
+  kn = prm.get_double("Normal stiffness");
+  kt = prm.get_double("Tangential stiffness");
+  time_step = prm.get_double("Time step");
+  damping_force = prm.get_double("Local damping force");
+  damping_moment = prm.get_double("Local damping moment");
+  rotation = prm.get("Rotation");
+  start = prm.get("Start");
+  relaxation_criterion = prm.get("Relaxation criterion");
+  relaxation_tolerance = prm.get_double("Relaxation tolerance");
+  servo_tolerance = prm.get_double("Servo tolerance");
+  gain_a = prm.get_double("Force gain");
+  gain_m = prm.get_double("Moment gain");
+  check_interval = prm.get_integer("Check interval");
+  step_budget = prm.get_integer("Step budget");
+  prm.leave_subsection();
+  for (auto [name, v] : {std::pair{"Normal stiffness", kn}, {"Tangential stiffness", kt},
+                         {"Time step", time_step}, {"Relaxation tolerance", relaxation_tolerance},
+                         {"Servo tolerance", servo_tolerance}, {"Force gain", gain_a},
+                         {"Moment gain", gain_m}})
+    if (!(v > 0.0))
+      throw std::runtime_error(std::string("subsection RVE: '") + name + "' = " + number(v) +
+                               " must be > 0");
+}
+
+RveSetup RveParameters::setup(const std::string& log_file) const
+{
+  RveSetup s;
+  s.template_file = template_file;
+  s.log_file = log_file;
+  s.variables = {{"rve_data", packing + ".rve.data"},
+                 {"rve_vars", packing + ".vars"},
+                 {"kn", number(kn)},
+                 {"kt", number(kt)},
+                 {"mu", number(friction)},
+                 {"dt", number(time_step)},
+                 {"alpha", number(damping_force)},
+                 {"beta", number(damping_moment)},
+                 {"rotation", rotation},
+                 {"gain_a", number(gain_a)},
+                 {"gain_m", number(gain_m)},
+                 {"relax", relaxation_criterion},
+                 {"relax_tol", number(relaxation_tolerance)},
+                 {"servo_tol", number(servo_tolerance)},
+                 {"check_every", std::to_string(check_interval)},
+                 {"max_steps", std::to_string(step_budget)},
+                 {"start", start},
+                 {"on_failure", "flag"}};
+  return s;
+}
+
+void PathParameters::declare_parameters(dealii::ParameterHandler& prm)
+{
+  prm.enter_subsection("Path");
+  prm.declare_entry("Type", "biaxial", Selection("isotropic|biaxial|simple shear|table"),
+                    "isotropic: compression to 'Pressure'; biaxial: isotropic stage, then axial "
+                    "compression (F22) at constant lateral stress sigma11 = -Pressure; simple "
+                    "shear: isotropic stage, then F12 = gamma; table: F from 'Table file'.");
+  prm.declare_entry("Pressure", "1.5e5", Double(0.0),
+                    "Confining pressure [N/m in 2D], compressive, >= 0.");
+  prm.declare_entry("Isotropic steps", "5", Integer(0),
+                    "Load steps of the isotropic stage (stress controlled).");
+  prm.declare_entry("Loading steps", "20", Integer(1),
+                    "Load steps of the biaxial or shear stage.");
+  prm.declare_entry("Axial strain", "0.05", Double(0.0, 0.5),
+                    "biaxial: final axial compressive strain, F22 = (1 - strain) F22_iso.");
+  prm.declare_entry("Shear strain", "0.05", Double(-1.0, 1.0), "simple shear: final F12.");
+  prm.declare_entry("Table file", "", Anything(),
+                    "table: whitespace-separated rows 'F11 F12 F21 F22', one load step each; "
+                    "'#' starts a comment.");
+  prm.declare_entry("Stress tolerance", "1e-2", Double(0.0),
+                    "Relative tolerance of stress-controlled components.");
+  prm.declare_entry("Max stress iterations", "15", Integer(1),
+                    "Secant iterations on F per stress-controlled load step.");
+  prm.leave_subsection();
+}
+
+void PathParameters::parse_parameters(dealii::ParameterHandler& prm, const std::string& base_dir)
+{
+  prm.enter_subsection("Path");
+  type = prm.get("Type");
+  pressure = prm.get_double("Pressure");
+  isotropic_steps = prm.get_integer("Isotropic steps");
+  loading_steps = prm.get_integer("Loading steps");
+  axial_strain = prm.get_double("Axial strain");
+  shear_strain = prm.get_double("Shear strain");
+  table_file = resolve(base_dir, prm.get("Table file"));
+  stress_tolerance = prm.get_double("Stress tolerance");
+  max_stress_iterations = prm.get_integer("Max stress iterations");
+  prm.leave_subsection();
+  if (type == "isotropic" && (pressure <= 0.0 || isotropic_steps == 0))
+    throw std::runtime_error("subsection Path: Type = isotropic needs 'Pressure' > 0 and "
+                             "'Isotropic steps' > 0");
+  if (stress_tolerance <= 0.0)
+    throw std::runtime_error("subsection Path: 'Stress tolerance' must be > 0");
+}
+
+void Parameters::declare_parameters(dealii::ParameterHandler& prm)
+{
+  prm.declare_entry("Output directory", "output", Anything(),
+                    "Directory for rve.csv (created; relative to the parameter file).");
+  RveParameters::declare_parameters(prm);
+  PathParameters::declare_parameters(prm);
+}
+
+void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
+{
+  const std::string base = std::filesystem::path(file).parent_path().string();
+  prm.parse_input(file); // throws deal.II's message naming the line on unknown entries
+  output_directory = resolve(base, prm.get("Output directory"));
+  rve.parse_parameters(prm, base);
+  path.parse_parameters(prm, base);
+  require_file(rve.template_file, "subsection RVE: Template", file);
+  require_file(rve.packing + ".rve.data", "subsection RVE: Packing (.rve.data)", file);
+  require_file(rve.packing + ".vars", "subsection RVE: Packing (.vars)", file);
+  if (path.type == "table")
+    require_file(path.table_file, "subsection Path: Table file", file);
+}
+} // namespace fe2dem::rve_driver

@@ -1,0 +1,58 @@
+/**
+ * @file rve_parameters.h
+ * Parameters of `fe2dem-rve FILE.prm`, one struct per subsection in the
+ * deal.II style: declare_parameters() documents every entry with a pattern,
+ * parse_parameters() reads and validates it.
+ */
+#pragma once
+
+#include "servo_rve.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace fe2dem::rve_driver
+{
+/// subsection RVE: the packing, the contact law and the servo settings.
+struct RveParameters
+{
+  std::string template_file;
+  std::string packing;
+  double friction, kn, kt, time_step, damping_force, damping_moment;
+  std::string rotation, start, relaxation_criterion;
+  double relaxation_tolerance, servo_tolerance, gain_a, gain_m;
+  unsigned int check_interval, step_budget;
+
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm, const std::string& base_dir);
+  /// The RVE set-up these parameters describe.
+  RveSetup setup(const std::string& log_file) const;
+};
+
+/// subsection Path: the macro path the RVE follows.
+struct PathParameters
+{
+  std::string type;          ///< isotropic | biaxial | simple shear | table
+  double pressure;           ///< confining pressure [N/m], > 0 compressive
+  unsigned int isotropic_steps, loading_steps;
+  double axial_strain, shear_strain;
+  std::string table_file;
+  double stress_tolerance;
+  unsigned int max_stress_iterations;
+
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm, const std::string& base_dir);
+};
+
+struct Parameters
+{
+  std::string output_directory;
+  RveParameters rve;
+  PathParameters path;
+
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  /// Reads @p file; throws with the file name on unknown or invalid entries.
+  void parse(dealii::ParameterHandler& prm, const std::string& file);
+};
+} // namespace fe2dem::rve_driver

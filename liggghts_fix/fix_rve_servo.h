@@ -14,7 +14,8 @@
  *     rotation free|locked     inner-particle rotations, default free
  *     inertia disc|sphere      moment of inertia 0.5 or 0.4 m r^2, default disc
  *     gains ga gm              dimensionless servo gains g_a M/dt^2, g_m M R^2/dt^2,
- *                              default 100 200
+ *                              default 5 10 (see README: the paper's 100 200
+ *                              diverge with our reading of the units)
  *     relax ekin_epot|unbalanced TOL   criterion (R12) or (R13), default ekin_epot 1e-3
  *     servo_tol EPS            r_a of (R14) at convergence, default 1e-4
  *     check_every N            steps between convergence checks, default 50
@@ -104,6 +105,8 @@ public:
   const std::vector<fe2dem::Vec2>& frame_forces() const { return frame_force_; }
   /// Frame fluctuations w per edge pair and rotations (pairs, then corners).
   const std::vector<fe2dem::Vec2>& fluctuations() const { return w_; }
+  /// Current rotation of each frame particle, in frame order.
+  const std::vector<double>& frame_rotations() const { return theta_frame_; }
   /// Steps between checks: C++ drivers run chunks of this length.
   int check_interval() const { return check_every_; }
   /// Human-readable reason of the last failure (empty if none).
@@ -138,7 +141,7 @@ private:
   double alpha_ = 0.7, beta_ = 0.7;
   bool lock_rotation_ = false;
   double inertia_factor_ = 0.5;
-  double gain_a_ = 100.0, gain_m_ = 200.0;
+  double gain_a_ = 5.0, gain_m_ = 10.0;
   bool criterion_unbalanced_ = false;
   double relax_tol_ = 1e-3;
   double servo_tol_ = 1e-4;

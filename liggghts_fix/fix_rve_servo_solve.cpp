@@ -42,16 +42,19 @@ void FixRveServo::schedule_frame_move()
   move_target_.resize(nq);
   rot_start_ = theta_frame_;
   rot_target_.resize(nq);
+  // Frame particles turn with the rigid rotation of F (2D polar angle) plus
+  // the servo's rotation, so that a rigid rotation leaves contacts unsheared.
+  const double theta_F = std::atan2(F_[2] - F_[1], F_[0] + F_[3]);
   double largest = 0.0;
   for (std::size_t q = 0; q < nq; ++q)
   {
     const fe2dem::FrameParticle& p = frame_.particles[q];
     move_target_[q] = fe2dem::apply(F_, p.X);
-    rot_target_[q] = theta_corner_;
+    rot_target_[q] = theta_F + theta_corner_;
     if (p.pair >= 0)
     {
       move_target_[q] = move_target_[q] + w_[p.pair];
-      rot_target_[q] = theta_pair_[p.pair];
+      rot_target_[q] = theta_F + theta_pair_[p.pair];
     }
     largest = std::max(largest, fe2dem::norm(move_target_[q] - move_start_[q]));
     largest = std::max(largest, std::abs(rot_target_[q] - rot_start_[q]) * p.radius);

@@ -67,8 +67,9 @@ void RveParameters::declare_parameters(dealii::ParameterHandler& prm)
   prm.declare_entry("Relaxation tolerance", "1e-3", Double(0.0),
                     "Tolerance of the relaxation criterion, > 0.");
   prm.declare_entry("Servo tolerance", "1e-4", Double(0.0), "Servo residual r_a (R14), > 0.");
-  prm.declare_entry("Force gain", "100", Double(0.0), "Dimensionless servo gain g_a M/dt^2.");
-  prm.declare_entry("Moment gain", "200", Double(0.0),
+  prm.declare_entry("Force gain", "5", Double(0.0),
+                    "Dimensionless servo gain g_a M/dt^2 ([LBS] prints 100, which diverges here).");
+  prm.declare_entry("Moment gain", "10", Double(0.0),
                     "Dimensionless servo gain g_m M R^2/dt^2.");
   prm.declare_entry("Check interval", "50", Integer(1),
                     "DEM steps between convergence checks (and C++ run chunk length).");

@@ -1,6 +1,6 @@
 #include "liggghts_instance.h"
 
-#include "quiet_stdout.h"
+#include "quiet_output.h"
 #include "register_styles.h"
 
 #include "fix.h"
@@ -25,7 +25,7 @@ LiggghtsInstance::LiggghtsInstance(MPI_Comm comm, const std::string& log_file, b
   for (auto& a : args)
     argv.push_back(&a[0]);
   {
-    QuietStdout quiet; // "Style collision" warnings go to stdout before -screen applies
+    QuietOutput quiet; // "Style collision" warnings go to stdout before -screen applies
     lmp_ = new LAMMPS_NS::LAMMPS(static_cast<int>(argv.size()), argv.data(), comm);
   }
   register_styles(lmp_);
@@ -33,7 +33,7 @@ LiggghtsInstance::LiggghtsInstance(MPI_Comm comm, const std::string& log_file, b
 
 LiggghtsInstance::~LiggghtsInstance()
 {
-  QuietStdout quiet;
+  QuietOutput quiet;
   delete lmp_;
 }
 
@@ -47,14 +47,14 @@ void LiggghtsInstance::command(const std::string& line)
     lmp_->input->one(&copy[0]);
   else
   {
-    QuietStdout quiet;
+    QuietOutput quiet;
     lmp_->input->one(&copy[0]);
   }
 }
 
 void LiggghtsInstance::file(const std::string& path)
 {
-  QuietStdout quiet;
+  QuietOutput quiet;
   lmp_->input->file(path.c_str());
 }
 

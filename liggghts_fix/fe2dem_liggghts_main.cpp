@@ -3,7 +3,7 @@
 #include "lammps.h"
 #include "input.h"
 #include "register_styles.h"
-#include "quiet_stdout.h"
+#include "quiet_output.h"
 
 #include <mpi.h>
 
@@ -12,7 +12,7 @@ int main(int argc, char** argv)
   MPI_Init(&argc, &argv);
   LAMMPS_NS::LAMMPS* lmp = nullptr;
   {
-    fe2dem::QuietStdout quiet; // hides Debian's "Style collision" chatter
+    fe2dem::QuietOutput quiet; // hides Debian's "Style collision" chatter
     lmp = new LAMMPS_NS::LAMMPS(argc, argv, MPI_COMM_WORLD);
   }
   fe2dem::register_styles(lmp);

@@ -28,6 +28,13 @@ namespace
 {
 double sign(double v) { return (v > 0.0) - (v < 0.0); }
 
+std::string format(double v)
+{
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
 bool parse_double(const char* s, double& out)
 {
   char* end = nullptr;
@@ -74,7 +81,7 @@ void FixRveServo::parse_arguments(int narg, char** arg)
     if (!parse_double(value, v) || (lo_open ? v <= lo : v < lo))
     {
       std::string msg = std::string("keyword '") + keyword + "': value '" + value +
-                        "' must be a number " + (lo_open ? "> " : ">= ") + std::to_string(lo);
+                        "' must be a number " + (lo_open ? "> " : ">= ") + format(lo);
       error->fix_error(FLERR, this, msg.c_str());
     }
     return v;

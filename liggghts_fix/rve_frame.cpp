@@ -15,6 +15,13 @@ std::string describe(int tag, const Vec2& X)
   return s.str();
 }
 
+std::string format(double v)
+{
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
 /// Index of the particle at position p, or -1.
 int find_at(const std::vector<Vec2>& X, const Vec2& p, double tol)
 {
@@ -58,8 +65,7 @@ FrameTopology build_frame_topology(const std::vector<int>& tags, const std::vect
   if (c00 < 0)
     throw std::runtime_error("no corner particle with periodic images at +Lx, +Ly and +Lx+Ly in "
                              "the frame group; check 'cell " +
-                             std::to_string(Lx) + " " + std::to_string(Ly) +
-                             "' against the packing (build it with rve_templates/build_frame.py)");
+                             format(Lx) + " " + format(Ly) + "' against the packing (build it with rve_templates/build_frame.py)");
 
   FrameTopology frame;
   frame.Lx = Lx;

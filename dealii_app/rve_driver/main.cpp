@@ -2,6 +2,7 @@
 #include "rve_parameters.h"
 #include "rve_path_runner.h"
 
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <mpi.h>
@@ -13,7 +14,8 @@ namespace
 {
 void print_usage()
 {
-  std::cout << "Usage: fe2dem-rve FILE.prm        drive one RVE along the path in FILE.prm\n"
+  std::cout << "Usage: fe2dem-rve FILE.prm [--output-directory DIR]\n"
+               "                                  drive one RVE along the path in FILE.prm\n"
                "       fe2dem-rve --print-parameters   every parameter, default and doc\n"
                "       fe2dem-rve --help\n"
                "Writes <Output directory>/rve.csv. Examples: rve_templates/examples/*.prm\n";
@@ -31,7 +33,8 @@ int main(int argc, char** argv)
     Parameters::declare_parameters(prm);
     int n_ranks = 1;
     MPI_Comm_size(MPI_COMM_WORLD, &n_ranks);
-    if (argc != 2 || std::strcmp(argv[1], "--help") == 0)
+    const bool with_output = argc == 4 && std::strcmp(argv[2], "--output-directory") == 0;
+    if ((argc != 2 && !with_output) || std::strcmp(argv[1], "--help") == 0)
     {
       print_usage();
       status = argc == 2 ? 0 : 2;
@@ -48,9 +51,19 @@ int main(int argc, char** argv)
     {
       Parameters parameters;
       parameters.parse(prm, argv[1]);
+      if (with_output)
+        parameters.output_directory = argv[3];
       RvePathRunner runner(parameters);
       runner.run();
     }
+  }
+  catch (const dealii::ExceptionBase& e)
+  {
+    // deal.II's parameter errors name file, line, entry and pattern in
+    // their "additional information"; the stack trace would only distract.
+    std::cerr << "\nfe2dem-rve: error in the parameter file:\n";
+    e.print_info(std::cerr);
+    status = 1;
   }
   catch (const std::exception& e)
   {

@@ -1,0 +1,54 @@
+#!/usr/bin/env python3
+"""Checks an rve.csv written by fe2dem-rve (stdlib only).
+
+Usage: check_rve_csv.py CSV PATH_TYPE PRESSURE ROWS
+Asserts the contract header, the row count, convergence of every row
+(r_a <= 1e-4), the agreement of boundary and Love-Weber stress (1 %), and
+that stress-controlled components hold the target within the tolerance.
+"""
+import csv
+import math
+import sys
+
+path, kind, pressure, rows_expected = sys.argv[1], sys.argv[2], float(sys.argv[3]), int(sys.argv[4])
+head = ["step"] + [f"{t}{ij}" for t in ("F", "P", "sigma", "sigmaLW") for ij in ("11", "12", "21", "22")]
+head += ["residual", "ekin_epot", "servo_iterations", "dem_steps", "coordination", "anisotropy",
+         "packing_fraction", "wall_s"]
+failures = []
+with open(path) as f:
+    reader = csv.reader(f)
+    header = next(reader)
+    rows = [dict(zip(header, map(float, r))) for r in reader]
+if header[: len(head)] != head:
+    failures.append(f"header {header[:len(head)]} != contract {head}")
+if len(rows) != rows_expected:
+    failures.append(f"{len(rows)} rows, expected {rows_expected}")
+for r in rows:
+    s = int(r["step"])
+    if not r["residual"] <= 1e-4:
+        failures.append(f"step {s}: r_a {r['residual']} > 1e-4")
+    num = math.sqrt(sum((r[f"sigma{ij}"] - r[f"sigmaLW{ij}"]) ** 2 for ij in ("11", "12", "21", "22")))
+    den = math.sqrt(sum(r[f"sigmaLW{ij}"] ** 2 for ij in ("11", "12", "21", "22")))
+    if num > 0.01 * den:
+        failures.append(f"step {s}: boundary vs Love-Weber stress differ by {num/den:.3%}")
+    if r["coordination"] <= 0 or not 0 < r["packing_fraction"] < 1:
+        failures.append(f"step {s}: implausible coordination/packing fraction")
+    if r["F_check_error"] > 1e-12:
+        failures.append(f"step {s}: F_check differs from F by {r['F_check_error']}")
+last = rows[-1]
+if kind == "isotropic":
+    mean = 0.5 * (last["sigma11"] + last["sigma22"])
+    if abs(mean + pressure) > 0.011 * pressure:
+        failures.append(f"final mean stress {mean}, target {-pressure}")
+if kind == "biaxial":
+    for r in rows[1:]:
+        if int(r["stress_iterations"]) > 0 and abs(r["sigma11"] + pressure) > 0.011 * pressure:
+            failures.append(f"step {int(r['step'])}: lateral stress {r['sigma11']}, target {-pressure}")
+    if not last["F22"] < rows[0]["F22"] or not last["sigma22"] < last["sigma11"]:
+        failures.append("axial compression did not raise the axial stress above the lateral one")
+if kind == "shear" and not abs(last["sigma12"]) > 0:
+    failures.append("no shear stress under simple shear")
+for msg in failures:
+    print("FAIL", msg)
+print(f"{path}: {len(rows)} rows, {len(failures)} failures")
+sys.exit(1 if failures else 0)

@@ -380,6 +380,24 @@ def build(args):
         fail(f"{path}: internal error: {missing} periodic contact(s) are not represented in "
              "the RVE frame. Please report this with the packing file.")
 
+    # --- contacts inside the (non-periodic) RVE, for cross-checks in the DEM code
+    c_rve = 0
+    bx_cells = {}
+    h = 2.0 * rmax
+    for b, (k, t, X, Y) in enumerate(bodies):
+        bx_cells.setdefault((math.floor(X / h), math.floor(Y / h)), []).append(b)
+    for (ix, iy), members in bx_cells.items():
+        for dx in (-1, 0, 1):
+            for dy in (-1, 0, 1):
+                for b2 in bx_cells.get((ix + dx, iy + dy), ()):
+                    for b1 in members:
+                        if b2 <= b1:
+                            continue
+                        k1, _, X1, Y1 = bodies[b1]
+                        k2, _, X2, Y2 = bodies[b2]
+                        if math.hypot(X2 - X1, Y2 - Y1) < rad[k1] + rad[k2]:
+                            c_rve += 1
+
     # --- statistics
     C = len(contacts)
     zc = [0] * n
@@ -453,6 +471,7 @@ def build(args):
         ("overlap_max_over_R_mean", f"{ovmax / rmean:.5g}"),
         ("overlap_mean_over_R_mean", f"{(ovsum / C if C else 0.0) / rmean:.5g}"),
         ("frame_contacts_missing", missing),
+        ("n_contacts_rve_nonperiodic", c_rve),
     ]
     if abs(phi - phi_periodic) > 1e-9:
         fail(f"{path}: internal error: packing fraction of the frame {phi} differs from the "

@@ -1,0 +1,41 @@
+// Cost per DEM step of one RVE driven through the coupler (LiggghtsInstance +
+// fix rve/servo, chunked runs "run N pre no post no"), as a user of
+// fe2dem-rve or the coupler pays it. The servo tolerance is set to 0 so
+// that the solve never ends and every step is a real relax/servo step.
+// Usage: bench_rve_steps TEMPLATE PACKING_PREFIX STEPS
+#include "servo_rve.h"
+
+#include <mpi.h>
+
+#include <cstdio>
+#include <string>
+
+int main(int argc, char** argv)
+{
+  MPI_Init(&argc, &argv);
+  if (argc != 4)
+  {
+    std::fprintf(stderr, "usage: bench_rve_steps TEMPLATE PACKING_PREFIX STEPS\n");
+    return 2;
+  }
+  const std::string prefix = argv[2];
+  const long steps = std::stol(argv[3]);
+  fe2dem::LiggghtsInstance lmp;
+  for (auto [k, v] : {std::pair<std::string, std::string>{"rve_data", prefix + ".rve.data"},
+                      {"rve_vars", prefix + ".vars"}, {"servo_tol", "1e-300"},
+                      {"max_steps", std::to_string(steps + 1000)}, {"on_failure", "flag"}})
+    lmp.set_variable(k, v);
+  lmp.file(argv[1]);
+  auto& fix = lmp.fix<LAMMPS_NS::FixRveServo>("rve");
+  lmp.command("run 0 post no");
+  const int chunk = fix.check_interval();
+  const double t0 = MPI_Wtime();
+  long done = 0;
+  for (; done < steps; done += chunk)
+    lmp.command("run " + std::to_string(chunk) + " pre no post no");
+  const double t = MPI_Wtime() - t0;
+  std::printf("coupler_us_per_step %.4f us\n", 1e6 * t / done);
+  std::printf("coupler_steps %ld steps\n", done);
+  MPI_Finalize();
+  return 0;
+}

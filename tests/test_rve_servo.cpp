@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstring>
 #include <iostream>
+#include <map>
 
 using namespace fe2dem;
 using Result = ServoRve::Result;
@@ -20,13 +21,16 @@ namespace
 {
 std::string template_file, packing;
 
-RveSetup setup(const std::string& rotation = "free")
+RveSetup setup(const std::string& rotation = "free",
+              std::map<std::string, std::string> extra = {})
 {
   RveSetup s;
   s.template_file = template_file;
   s.log_file = "/tmp/test_rve_servo.log";
   s.variables = {{"rve_data", packing + ".rve.data"}, {"rve_vars", packing + ".vars"},
                  {"on_failure", "flag"}, {"rotation", rotation}};
+  for (const auto& [k, v] : extra)
+    s.variables[k] = v;
   return s;
 }
 
@@ -182,6 +186,25 @@ void check_rotation(Checker& check)
   check.truth("locked rotation is stiffer in simple shear", tau[1] > tau[0],
               "locked " + std::to_string(tau[1]) + " vs free " + std::to_string(tau[0]));
 }
+/// (R13) as the relaxation criterion converges and is reported.
+void check_unbalanced(Checker& check)
+{
+  ServoRve rve(setup("free", {{"relax", "unbalanced"}, {"relax_tol", "0.01"}}));
+  const Result r = rve.solve({0.998, 0.0, 0.0, 0.996});
+  check.less("r_a <= 1e-4 with relax unbalanced", r.residual, 1e-4 * (1 + 1e-12));
+  check.less("unbalanced-force index <= 0.01 (R13)", r.unbalanced, 0.01);
+  check.less("|sigma - sigma_LW| / |sigma_LW| < 1 %", rel(r.sigma, r.sigma_lw), 0.01);
+}
+
+/// A solve over its step budget raises an error naming the reason.
+void check_budget(Checker& check)
+{
+  check.throws_with("step budget exceeded -> RveSolveError",
+                    [&] {
+                      ServoRve tight(setup("free", {{"max_steps", "200"}}));
+                    },
+                    "not converged within max_steps");
+}
 } // namespace
 
 int main(int argc, char** argv)
@@ -203,6 +226,8 @@ int main(int argc, char** argv)
     else if (c == "hill_mandel") check_hill_mandel(check);
     else if (c == "objectivity") check_objectivity(check);
     else if (c == "rotation") check_rotation(check);
+    else if (c == "unbalanced") check_unbalanced(check);
+    else if (c == "budget") check_budget(check);
     else check.truth("known case", false, c);
   }
   catch (const std::exception& e)

@@ -319,6 +319,7 @@ void FixRveServo::post_create()
   const std::size_t nq = frame_.particles.size(), ne = frame_.pairs.size();
   w_.assign(ne, {0.0, 0.0});
   theta_pair_.assign(ne, 0.0);
+  servo_memory_.assign(ne, ServoMemory{});
   theta_frame_.assign(nq, 0.0);
   frame_force_.assign(nq, {0.0, 0.0});
   frame_moment_.assign(nq, 0.0);

@@ -161,6 +161,16 @@ private:
   std::vector<fe2dem::Vec2> w_;
   std::vector<double> theta_pair_;
   double theta_corner_ = 0.0;
+  /// Adaptive gain state of one edge pair (or of the corners).
+  struct ServoMemory
+  {
+    fe2dem::Vec2 force_factor{1.0, 1.0};
+    double moment_factor = 1.0;
+    fe2dem::Vec2 last_da{0.0, 0.0};
+    double last_dm = 0.0;
+  };
+  std::vector<ServoMemory> servo_memory_;
+  ServoMemory servo_memory_corner_;
   std::vector<double> theta_frame_; ///< current rotation of each frame particle
 
   // prescribed frame motion

@@ -215,9 +215,18 @@ double FixRveServo::servo_residual() const
 // Step 4 of the servo: move each pair along its net contact force (and
 // rotate along its net contact moment), i.e. against the residual a_+ + a_-
 // of (R4). Moving along the net contact force is the stable direction.
+//
+// The fixed gain g_a = gain_a dt^2/M overshoots for a pair held by many
+// stiff contacts (measured: a period-2 oscillation of a_+ + a_- at
+// constant amplitude). Each pair therefore scales its gain by a factor in
+// (0, 1] that halves whenever its residual changes sign and recovers by
+// 20 % per iteration otherwise, per force component and for the moment.
 void FixRveServo::apply_servo_correction()
 {
   const double dt2 = dtv_ * dtv_;
+  auto adapt = [](double& factor, double now, double before) {
+    factor = now * before < 0.0 ? 0.5 * factor : std::min(1.0, 1.2 * factor);
+  };
   for (std::size_t e = 0; e < frame_.pairs.size(); ++e)
   {
     const auto& pr = frame_.pairs[e];
@@ -225,14 +234,26 @@ void FixRveServo::apply_servo_correction()
     const double M = atom->rmass[i], R = atom->radius[i];
     const Vec2 da = frame_force_[pr[0]] + frame_force_[pr[1]];
     const double dm = frame_moment_[pr[0]] + frame_moment_[pr[1]];
-    w_[e] = w_[e] - (gain_a_ * dt2 / M) * da;
-    theta_pair_[e] -= gain_m_ * dt2 / (M * R * R) * dm;
+    ServoMemory& mem = servo_memory_[e];
+    for (int k = 0; k < 2; ++k)
+    {
+      adapt(mem.force_factor[k], da[k], mem.last_da[k]);
+      w_[e][k] -= mem.force_factor[k] * gain_a_ * dt2 / M * da[k];
+    }
+    adapt(mem.moment_factor, dm, mem.last_dm);
+    theta_pair_[e] -= mem.moment_factor * gain_m_ * dt2 / (M * R * R) * dm;
+    mem.last_da = da;
+    mem.last_dm = dm;
   }
   const int c = local_index(frame_.particles[frame_.corners[0]].tag);
   double dmc = 0.0;
   for (int k : frame_.corners)
     dmc += frame_moment_[k];
-  theta_corner_ -= gain_m_ * dt2 / (atom->rmass[c] * std::pow(atom->radius[c], 2)) * dmc;
+  ServoMemory& mc = servo_memory_corner_;
+  adapt(mc.moment_factor, dmc, mc.last_dm);
+  theta_corner_ -=
+    mc.moment_factor * gain_m_ * dt2 / (atom->rmass[c] * std::pow(atom->radius[c], 2)) * dmc;
+  mc.last_dm = dmc;
   ++result_.servo_iterations;
   schedule_frame_move();
 }

@@ -202,7 +202,6 @@ def build_cells(pos, Lx, Ly, cut):
 
 def periodic_contacts(pos, rad, Lx, Ly):
     """All pairs with overlap > 0, minimum image. Returns list (i, j, nx, ny, overlap, dist)."""
-    n = len(pos)
     cut = 2.0 * max(rad)
     cells, nx, ny = build_cells(pos, Lx, Ly, cut)
     out = []
@@ -228,7 +227,6 @@ def periodic_contacts(pos, rad, Lx, Ly):
                     if dist == 0.0:
                         fail(f"particles {i} and {j} coincide.")
                     out.append((i, j, dx / dist, dy / dist, ov, dist))
-    del n
     return out
 
 

@@ -123,7 +123,10 @@ private:
   // --- servo state machine ----------------------------------------------
   void begin_solve();
   void schedule_frame_move();
-  void evaluate_state();
+  /// Kinetic energy of the inner particles; flags escape and blow-up.
+  double check_particles();
+  /// Contacts, stresses, statistics and servo residual into result_.
+  void homogenise(double ekin);
   double servo_residual() const;
   void apply_servo_correction();
   void fail(Status s, const std::string& reason);
@@ -194,6 +197,7 @@ private:
   std::vector<fe2dem::Contact> contacts_;
   std::vector<int> tag_to_dense_;
   int n_particles_ = 0;
+  int n_inner_ = 0;
   double dtv_ = 0.0, dtf_ = 0.0;
 };
 } // namespace LAMMPS_NS

@@ -2,7 +2,7 @@
 // fix rve/servo, chunked runs "run N pre no post no"), as a user of
 // fe2dem-rve or the coupler pays it. The servo tolerance is set to 0 so
 // that the solve never ends and every step is a real relax/servo step.
-// Usage: bench_rve_steps TEMPLATE PACKING_PREFIX STEPS
+// Usage: bench_rve_steps TEMPLATE PACKING_PREFIX STEPS [CHECK_EVERY]
 #include "servo_rve.h"
 
 #include <mpi.h>
@@ -13,9 +13,9 @@
 int main(int argc, char** argv)
 {
   MPI_Init(&argc, &argv);
-  if (argc != 4)
+  if (argc != 4 && argc != 5)
   {
-    std::fprintf(stderr, "usage: bench_rve_steps TEMPLATE PACKING_PREFIX STEPS\n");
+    std::fprintf(stderr, "usage: bench_rve_steps TEMPLATE PACKING_PREFIX STEPS [CHECK_EVERY]\n");
     return 2;
   }
   const std::string prefix = argv[2];
@@ -23,7 +23,8 @@ int main(int argc, char** argv)
   fe2dem::LiggghtsInstance lmp;
   for (auto [k, v] : {std::pair<std::string, std::string>{"rve_data", prefix + ".rve.data"},
                       {"rve_vars", prefix + ".vars"}, {"servo_tol", "1e-300"},
-                      {"max_steps", std::to_string(steps + 1000)}, {"on_failure", "flag"}})
+                      {"max_steps", std::to_string(steps + 1000)}, {"on_failure", "flag"},
+                      {"check_every", argc == 5 ? argv[4] : "50"}})
     lmp.set_variable(k, v);
   lmp.file(argv[1]);
   auto& fix = lmp.fix<LAMMPS_NS::FixRveServo>("rve");

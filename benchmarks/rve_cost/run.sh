@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Cost per DEM step of the reference RVE: through the coupler and fix
-# rve/servo (chunked runs) versus the same packing and step count under the
+# rve/servo (chunked runs; convergence checks every 50 steps, the default,
+# and every 1000 steps) versus the same packing and step count under the
 # bare Debian `liggghts` binary. Runs interleaved repetitions and reports
 # medians and their ratio as `name value unit` lines; appends them to
 # results.csv with machine, date and commit.
@@ -9,25 +10,27 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 build="${1:-$root/build}"
-packing="${2:-$root/rve_templates/packings/lbs_ref}"
+packing="$(realpath -m "${2:-$root/rve_templates/packings/lbs_ref}")"
 steps="${3:-20000}"
 repeats="${4:-5}"
 template="$root/rve_templates/rve_setup_2d.liggghts"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
 
-coupler=(); bare=()
+coupler=(); coupler_sparse=(); bare=()
 for ((k = 0; k < repeats; ++k)); do
-  c=$("$build/benchmarks/rve_cost/bench_rve_steps" "$template" "$packing" "$steps" | awk '/coupler_us_per_step/ {print $2}')
+  c=$("$build/benchmarks/rve_cost/bench_rve_steps" "$template" "$packing" "$steps" 50 | awk '/coupler_us_per_step/ {print $2}')
+  cs=$("$build/benchmarks/rve_cost/bench_rve_steps" "$template" "$packing" "$steps" 1000 | awk '/coupler_us_per_step/ {print $2}')
   (cd "$tmp" && liggghts -in "$here/bare_liggghts.in" -var packing "$packing" -var steps "$steps" -log none > bare.out)
   loop=$(awk -v n="$steps" '/Loop time of/ && $9 == n {print $4}' "$tmp/bare.out" | tail -1)
   grep -q "steps with $(awk '/atoms$/ {print $1; exit}' "$packing.rve.data") atoms" "$tmp/bare.out" ||
     { echo "bare liggghts run lost atoms; see $tmp/bare.out" >&2; exit 1; }
   b=$(awk -v t="$loop" -v n="$steps" 'BEGIN {printf "%.4f", 1e6 * t / n}')
-  coupler+=("$c"); bare+=("$b")
+  coupler+=("$c"); coupler_sparse+=("$cs"); bare+=("$b")
 done
 median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2) ? a[(NR+1)/2] : 0.5*(a[NR/2]+a[NR/2+1])}'; }
-mc=$(median "${coupler[@]}"); mb=$(median "${bare[@]}")
+mc=$(median "${coupler[@]}"); mcs=$(median "${coupler_sparse[@]}"); mb=$(median "${bare[@]}")
 ratio=$(awk -v a="$mc" -v b="$mb" 'BEGIN {printf "%.4f", a / b}')
+ratio_sparse=$(awk -v a="$mcs" -v b="$mb" 'BEGIN {printf "%.4f", a / b}')
 natoms=$(awk '/atoms$/ {print $1; exit}' "$packing.rve.data")
 echo "particles $natoms count"
 echo "steps $steps steps"
@@ -35,9 +38,12 @@ echo "repeats $repeats runs"
 echo "bare_liggghts_us_per_step $mb us"
 echo "coupler_us_per_step $mc us"
 echo "coupler_over_bare $ratio ratio"
+echo "coupler_check1000_us_per_step $mcs us"
+echo "coupler_check1000_over_bare $ratio_sparse ratio"
 echo "all_coupler_samples ${coupler[*]}"
+echo "all_coupler_check1000_samples ${coupler_sparse[*]}"
 echo "all_bare_samples ${bare[*]}"
 csv="$here/results.csv"
-[[ -f "$csv" ]] || echo "date,commit,machine,particles,steps,repeats,bare_us_per_step,coupler_us_per_step,ratio" > "$csv"
+[[ -f "$csv" ]] || echo "date,commit,machine,particles,steps,repeats,bare_us_per_step,coupler_us_per_step,ratio,coupler_check1000_us_per_step,ratio_check1000" > "$csv"
 machine="$(nproc)cores-$(awk -F: '/model name/ {gsub(/^ +/, "", $2); print $2; exit}' /proc/cpuinfo | tr ', ' '__')"
-echo "$(date -u +%FT%TZ),$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo none),$machine,$natoms,$steps,$repeats,$mb,$mc,$ratio" >> "$csv"
+echo "$(date -u +%FT%TZ),$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo none),$machine,$natoms,$steps,$repeats,$mb,$mc,$ratio,$mcs,$ratio_sparse" >> "$csv"

@@ -114,6 +114,9 @@ void FixRveServo::post_create()
   servo_memory_.assign(ne, ServoMemory{});
   theta_frame_.assign(nq, 0.0);
   frame_force_.assign(nq, {0.0, 0.0});
+  frame_local_.assign(nq, 0);
+  for (std::size_t q = 0; q < nq; ++q)
+    frame_local_[q] = local_index(frame_.particles[q].tag);
   frame_moment_.assign(nq, 0.0);
 
   // Per-contact data (forces, branch vectors) come from LIGGGHTS' own
@@ -138,10 +141,6 @@ void FixRveServo::init()
     begin_solve();
 }
 
-double FixRveServo::inertia_of(int i) const
-{
-  return inertia_factor_ * atom->rmass[i] * atom->radius[i] * atom->radius[i];
-}
 
 int FixRveServo::local_index(int tag) const
 {
@@ -189,9 +188,10 @@ void FixRveServo::initial_integrate(int)
     ++move_done_;
   const double s = moving ? static_cast<double>(move_done_) / move_steps_ : 0.0;
   const double inv_t = moving ? 1.0 / (move_steps_ * dtv_) : 0.0;
+  // frame_local_ was refreshed in the last post_force (after any atom sort).
   for (std::size_t q = 0; q < frame_.particles.size(); ++q)
   {
-    const int i = local_index(frame_.particles[q].tag);
+    const int i = frame_local_[q];
     if (moving)
     {
       const Vec2 d = move_target_[q] - move_start_[q];
@@ -222,7 +222,7 @@ void FixRveServo::post_force(int)
 
   for (std::size_t q = 0; q < frame_.particles.size(); ++q)
   {
-    const int i = local_index(frame_.particles[q].tag);
+    const int i = frame_local_[q] = local_index(frame_.particles[q].tag);
     frame_force_[q] = {-f[i][0], -f[i][1]};
     frame_moment_[q] = -torque[i][2];
   }

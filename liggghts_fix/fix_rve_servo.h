@@ -43,6 +43,7 @@
 #ifndef FE2DEM_FIX_RVE_SERVO_H
 #define FE2DEM_FIX_RVE_SERVO_H
 
+#include "atom.h"
 #include "fix.h"
 #include "rve_homogenisation.h"
 
@@ -127,6 +128,8 @@ private:
   double check_particles();
   /// Contacts, stresses, statistics and servo residual into result_.
   void homogenise(double ekin);
+  /// Relaxation test, convergence decision or servo correction at a check.
+  void servo_check(double ekin);
   double servo_residual() const;
   void apply_servo_correction();
   void fail(Status s, const std::string& reason);
@@ -134,7 +137,11 @@ private:
   // --- helpers ------------------------------------------------------------
   int local_index(int tag) const;
   void collect_contacts();
-  double inertia_of(int i) const;
+  /// Moment of inertia of particle i (disc or sphere factor).
+  double inertia_of(int i) const
+  {
+    return inertia_factor_ * atom->rmass[i] * atom->radius[i] * atom->radius[i];
+  }
 
   // parameters
   std::string frame_group_;
@@ -182,6 +189,7 @@ private:
   int move_steps_ = 0, move_done_ = 0;
 
   // per-step records
+  std::vector<int> frame_local_;          ///< local index of each frame particle
   std::vector<fe2dem::Vec2> frame_force_; ///< a_q
   std::vector<double> frame_moment_;      ///< m_q
   double unbalanced_sq_sum_ = 0.0;
@@ -198,6 +206,7 @@ private:
   std::vector<int> tag_to_dense_;
   int n_particles_ = 0;
   int n_inner_ = 0;
+  int checks_since_contact_pass_ = 0;
   double dtv_ = 0.0, dtf_ = 0.0;
 };
 } // namespace LAMMPS_NS

@@ -158,9 +158,9 @@ void FixRveServo::setup(int vflag)
   post_force(vflag);
 }
 
-void FixRveServo::initial_integrate(int)
+// Velocity Verlet half step of the inner particles (velocity and spin).
+void FixRveServo::half_kick_inner()
 {
-  double** x = atom->x;
   double** v = atom->v;
   double** f = atom->f;
   double** omega = atom->omega;
@@ -173,13 +173,26 @@ void FixRveServo::initial_integrate(int)
     const double dtfm = dtf_ / atom->rmass[i];
     v[i][0] += dtfm * f[i][0];
     v[i][1] += dtfm * f[i][1];
-    x[i][0] += dtv_ * v[i][0];
-    x[i][1] += dtv_ * v[i][1];
     if (lock_rotation_)
       omega[i][2] = 0.0;
     else
       omega[i][2] += dtf_ / inertia_of(i) * torque[i][2];
   }
+}
+
+void FixRveServo::initial_integrate(int)
+{
+  double** x = atom->x;
+  double** v = atom->v;
+  double** omega = atom->omega;
+  const int* mask = atom->mask;
+  half_kick_inner();
+  for (int i = 0; i < atom->nlocal; ++i)
+    if ((mask[i] & groupbit) && !(mask[i] & frame_groupbit_))
+    {
+      x[i][0] += dtv_ * v[i][0];
+      x[i][1] += dtv_ * v[i][1];
+    }
 
   // Frame: prescribed velocities; positions interpolated so that the end
   // of a move lands exactly on the target.
@@ -245,23 +258,7 @@ void FixRveServo::post_force(int)
 
 void FixRveServo::final_integrate()
 {
-  double** v = atom->v;
-  double** f = atom->f;
-  double** omega = atom->omega;
-  double** torque = atom->torque;
-  const int* mask = atom->mask;
-  for (int i = 0; i < atom->nlocal; ++i)
-  {
-    if (!(mask[i] & groupbit) || (mask[i] & frame_groupbit_))
-      continue;
-    const double dtfm = dtf_ / atom->rmass[i];
-    v[i][0] += dtfm * f[i][0];
-    v[i][1] += dtfm * f[i][1];
-    if (lock_rotation_)
-      omega[i][2] = 0.0;
-    else
-      omega[i][2] += dtf_ / inertia_of(i) * torque[i][2];
-  }
+  half_kick_inner();
 }
 
 int FixRveServo::modify_param(int narg, char** arg)

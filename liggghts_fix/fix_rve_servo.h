@@ -137,6 +137,7 @@ private:
   // --- helpers ------------------------------------------------------------
   int local_index(int tag) const;
   void collect_contacts();
+  void half_kick_inner();
   /// Moment of inertia of particle i (disc or sphere factor).
   double inertia_of(int i) const
   {

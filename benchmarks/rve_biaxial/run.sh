@@ -7,7 +7,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-build="${1:-$root/build}"
+build="$(realpath -m "${1:-$root/build}")"
 cd "$here"
 cases=("free_mu0.2 free 0.2" "free_mu0.4 free 0.4" "free_mu0.6 free 0.6" "locked_mu0.4 locked 0.4")
 for c in "${cases[@]}"; do

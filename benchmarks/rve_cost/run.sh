@@ -9,7 +9,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-build="${1:-$root/build}"
+build="$(realpath -m "${1:-$root/build}")"
 packing="$(realpath -m "${2:-$root/rve_templates/packings/lbs_ref}")"
 steps="${3:-20000}"
 repeats="${4:-5}"

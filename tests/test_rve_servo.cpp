@@ -4,6 +4,7 @@
 #include "check.h"
 #include "servo_rve.h"
 
+#include "atom.h"
 #include "lammps.h"
 #include "library.h"
 
@@ -19,14 +20,14 @@ using Result = ServoRve::Result;
 
 namespace
 {
-std::string template_file, packing;
+std::string template_file, packing, log_file = "none";
 
 RveSetup setup(const std::string& rotation = "free",
               std::map<std::string, std::string> extra = {})
 {
   RveSetup s;
   s.template_file = template_file;
-  s.log_file = "/tmp/test_rve_servo.log";
+  s.log_file = log_file; // LIGGGHTS' own messages, if it exits
   s.variables = {{"rve_data", packing + ".rve.data"}, {"rve_vars", packing + ".vars"},
                  {"on_failure", "flag"}, {"rotation", rotation}};
   for (const auto& [k, v] : extra)
@@ -189,6 +190,33 @@ void check_rotation(Checker& check)
   check.truth("locked rotation is stiffer in simple shear", tau[1] > tau[0],
               "locked " + std::to_string(tau[1]) + " vs free " + std::to_string(tau[0]));
 }
+/// Affine frame with the inner particles frozen (fix freeze): F_check = F.
+void check_frozen_inner(Checker& check)
+{
+  ServoRve rve(setup());
+  rve.instance().command("velocity inner set 0 0 0");
+  rve.instance().command("fix fe2dem_frozen inner freeze");
+  auto inner_positions = [&] {
+    LAMMPS_NS::Atom* atom = rve.instance().lammps()->atom;
+    std::map<int, Vec2> x;
+    for (int i = 0; i < atom->nlocal; ++i)
+      if (atom->type[i] == 1)
+        x[atom->tag[i]] = {atom->x[i][0], atom->x[i][1]};
+    return x;
+  };
+  const auto x_inner = inner_positions();
+  for (const Mat2& F : {Mat2{0.99, 0.02, -0.01, 0.985}, Mat2{1.01, 0.0, 0.03, 0.995}})
+  {
+    rve.fix().set_deformation(F);
+    rve.instance().command("run 2000 post no");
+    const auto x = rve.fix().frame_positions();
+    const auto& frame = rve.fix().frame();
+    check.less("F_check = F, inner frozen, F12 = " + std::to_string(F[1]),
+               rel(frame_deformation(frame, x), F), 1e-13);
+    check.truth("inner particles did not move", inner_positions() == x_inner);
+  }
+}
+
 /// (R13) as the relaxation criterion converges and is reported.
 void check_unbalanced(Checker& check)
 {
@@ -221,6 +249,7 @@ int main(int argc, char** argv)
   template_file = argv[2];
   packing = argv[3];
   const std::string c = argv[1];
+  log_file = "test_rve_servo_" + c + ".log";
   Checker check("rve_servo " + c);
   try
   {
@@ -230,6 +259,7 @@ int main(int argc, char** argv)
     else if (c == "objectivity") check_objectivity(check);
     else if (c == "rotation") check_rotation(check);
     else if (c == "unbalanced") check_unbalanced(check);
+    else if (c == "frozen_inner") check_frozen_inner(check);
     else if (c == "budget") check_budget(check);
     else check.truth("known case", false, c);
   }

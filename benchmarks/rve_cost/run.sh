@@ -40,6 +40,9 @@ echo "coupler_us_per_step $mc us"
 echo "coupler_over_bare $ratio ratio"
 echo "coupler_check1000_us_per_step $mcs us"
 echo "coupler_check1000_over_bare $ratio_sparse ratio"
+minimum() { printf '%s\n' "$@" | sort -g | head -1; }
+min_ratio=$(awk -v a="$(minimum "${coupler[@]}")" -v b="$(minimum "${bare[@]}")" 'BEGIN {printf "%.4f", a / b}')
+echo "coupler_over_bare_of_minima $min_ratio ratio"
 echo "all_coupler_samples ${coupler[*]}"
 echo "all_coupler_check1000_samples ${coupler_sparse[*]}"
 echo "all_bare_samples ${bare[*]}"

@@ -1,31 +1,131 @@
 #include "servo_rve.h"
 
 #include <mpi.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 
 namespace fe2dem
 {
-ServoRve::ServoRve(const RveSetup& setup)
-  : instance_(std::make_unique<LiggghtsInstance>(MPI_COMM_SELF, setup.log_file))
+namespace
 {
-  for (const auto& [name, value] : setup.variables)
-    instance_->set_variable(name, value);
-  instance_->file(setup.template_file);
-  fix_ = &instance_->fix<LAMMPS_NS::FixRveServo>(setup.fix_id);
-  fix_->set_deformation(identity2());
+/// A process-unique file name in /dev/shm (memory) for restart images.
+std::string state_file(const char* kind)
+{
+  static std::atomic<long> counter{0};
+  const std::string dir = std::filesystem::is_directory("/dev/shm") ? "/dev/shm" : "/tmp";
+  return dir + "/fe2dem-" + std::to_string(getpid()) + "-" + std::to_string(counter++) + "-" +
+         kind + ".restart";
+}
+
+std::vector<char> read_bytes(const std::string& file)
+{
+  std::ifstream in(file, std::ios::binary);
+  return std::vector<char>(std::istreambuf_iterator<char>(in), {});
+}
+
+void write_bytes(const std::string& file, const std::vector<char>& bytes)
+{
+  std::ofstream out(file, std::ios::binary);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  if (!out)
+    throw std::runtime_error("cannot write RVE state to '" + file + "'");
+}
+} // namespace
+
+ServoRve::ServoRve(const RveSetup& setup, HistoryMode mode)
+  : setup_(setup), mode_(mode), committed_file_(state_file("committed"))
+{
+  open_instance("");
+  fix_->set_deformation(identity2()); // relax the packing as built
   run_until_done();
+  commit();
+}
+
+ServoRve::ServoRve(const RveSetup& setup, HistoryMode mode, const std::string& restart_file,
+                   FromRestart)
+  : setup_(setup), mode_(mode), committed_file_(state_file("committed"))
+{
+  open_instance(restart_file);
+}
+
+std::unique_ptr<ServoRve> ServoRve::restore(const RveSetup& setup, const std::vector<char>& state,
+                                            HistoryMode mode)
+{
+  const std::string file = state_file("restore");
+  write_bytes(file, state);
+  std::unique_ptr<ServoRve> rve(new ServoRve(setup, mode, file, FromRestart{}));
+  // The restored state is the one to return to: commit it.
+  std::filesystem::rename(file, rve->committed_file_);
+  rve->committed_bytes_ = state.size();
+  rve->at_committed_state_ = true;
+  return rve;
+}
+
+ServoRve::~ServoRve()
+{
+  instance_.reset();
+  std::error_code ec;
+  std::filesystem::remove(committed_file_, ec);
+}
+
+void ServoRve::open_instance(const std::string& restart_file)
+{
+  instance_ = std::make_unique<LiggghtsInstance>(MPI_COMM_SELF, setup_.log_file);
+  for (const auto& [name, value] : setup_.variables)
+    instance_->set_variable(name, value);
+  if (!restart_file.empty())
+  {
+    instance_->set_variable("rve_restore", "1");
+    instance_->set_variable("rve_restart_file", restart_file);
+  }
+  instance_->file(setup_.template_file);
+  fix_ = &instance_->fix<LAMMPS_NS::FixRveServo>(setup_.fix_id);
 }
 
 const ServoRve::Result& ServoRve::solve(const Mat2& F)
 {
+  if (mode_ == HistoryMode::committed && !at_committed_state_)
+    rollback();
+  at_committed_state_ = false;
   fix_->set_deformation(F);
   run_until_done();
   return fix_->result();
 }
 
+void ServoRve::commit()
+{
+  instance_->command("write_restart " + committed_file_);
+  committed_bytes_ = std::filesystem::file_size(committed_file_);
+  at_committed_state_ = true;
+}
+
+void ServoRve::rollback()
+{
+  if (committed_bytes_ == 0)
+    throw std::logic_error("ServoRve::rollback() before any commit()");
+  open_instance(committed_file_);
+  at_committed_state_ = true;
+}
+
+std::vector<char> ServoRve::serialise()
+{
+  const std::string file = state_file("serialise");
+  instance_->command("write_restart " + file);
+  std::vector<char> bytes = read_bytes(file);
+  std::filesystem::remove(file);
+  return bytes;
+}
+
 void ServoRve::run_until_done()
 {
   const double t0 = MPI_Wtime();
-  // The first run of an instance needs LIGGGHTS' set-up; later chunks skip it.
+  // The first chunk of every solve does LIGGGHTS' full set-up (neighbour
+  // lists rebuilt from scratch), as a restored instance must: that makes
+  // restore and rollback bitwise; later chunks skip it.
   bool first = true;
   while (fix_->status() == LAMMPS_NS::FixRveServo::running)
   {

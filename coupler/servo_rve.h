@@ -3,6 +3,13 @@
  * One RVE: a LIGGGHTS instance set up from an RVE template and driven by
  * fix rve/servo. `solve(F)` runs chunks of steps until the fix reports an
  * outcome; failures become exceptions instead of LIGGGHTS' exit(1).
+ *
+ * State: `commit()` keeps the current state as the converged load step
+ * (a LIGGGHTS restart file in /dev/shm, i.e. memory), `rollback()` returns
+ * to it exactly, `serialise()` / `restore()` move the full state (particles,
+ * contact history, fix state) through bytes, e.g. to another MPI rank.
+ * Every solve begins with a full LIGGGHTS set-up (neighbour lists rebuilt),
+ * so a restored instance continues bit for bit as the original would.
  */
 #pragma once
 
@@ -13,16 +20,24 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace fe2dem
 {
 /// What it takes to build an RVE.
 struct RveSetup
 {
-  std::string template_file;                  ///< LIGGGHTS script defining fix `fix_id`
+  std::string template_file;                    ///< LIGGGHTS script defining fix `fix_id`
   std::map<std::string, std::string> variables; ///< index variables set before the script
   std::string fix_id = "rve";
   std::string log_file = "none";
+};
+
+/// Where every trial solve starts (physics.md §2.8).
+enum class HistoryMode
+{
+  committed, ///< from the last committed state ([LBS])
+  continuous ///< from wherever the previous solve ended ([LSYF])
 };
 
 /// An RVE solve that ended without convergence.
@@ -41,24 +56,51 @@ class ServoRve
 public:
   using Result = LAMMPS_NS::FixRveServo::Result;
 
-  /// Builds the instance and relaxes the packing at F = I.
-  explicit ServoRve(const RveSetup& setup);
+  /// Builds the instance, relaxes the packing at F = I and commits that state.
+  explicit ServoRve(const RveSetup& setup, HistoryMode mode = HistoryMode::continuous);
+  /// Rebuilds an RVE from serialise() bytes (same template and variables).
+  static std::unique_ptr<ServoRve> restore(const RveSetup& setup, const std::vector<char>& state,
+                                           HistoryMode mode = HistoryMode::continuous);
+  ~ServoRve();
+  ServoRve(const ServoRve&) = delete;
+  ServoRve& operator=(const ServoRve&) = delete;
 
   /**
    * Applies macro deformation @p F (row-major, det F > 0), relaxes and servos.
+   * In committed mode the solve starts from the last committed state.
    * @throws RveSolveError if the fix reports no convergence, an escaped
    *         particle or a blow-up.
    */
   const Result& solve(const Mat2& F);
+  /// Accepts the current state as the converged load step.
+  void commit();
+  /// Returns exactly to the last committed state.
+  void rollback();
+  /// The full current state as bytes (a LIGGGHTS restart image).
+  std::vector<char> serialise();
 
   const Result& result() const { return fix_->result(); }
   LAMMPS_NS::FixRveServo& fix() { return *fix_; }
   LiggghtsInstance& instance() { return *instance_; }
+  HistoryMode history_mode() const { return mode_; }
   /// Wall seconds of the last solve.
   double last_solve_seconds() const { return last_seconds_; }
+  /// Bytes of the committed state image (the memory an RVE keeps besides LIGGGHTS).
+  std::size_t committed_bytes() const { return committed_bytes_; }
 
 private:
+  struct FromRestart
+  {
+  };
+  ServoRve(const RveSetup& setup, HistoryMode mode, const std::string& restart_file, FromRestart);
+  void open_instance(const std::string& restart_file);
   void run_until_done();
+
+  RveSetup setup_;
+  HistoryMode mode_;
+  std::string committed_file_;
+  std::size_t committed_bytes_ = 0;
+  bool at_committed_state_ = false;
   std::unique_ptr<LiggghtsInstance> instance_;
   LAMMPS_NS::FixRveServo* fix_ = nullptr;
   double last_seconds_ = 0.0;

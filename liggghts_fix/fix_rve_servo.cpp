@@ -37,6 +37,7 @@ FixRveServo::FixRveServo(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg
   extvector = 0;
   time_integrate = 1;
   nevery = 1;
+  restart_global = 1;
   F_input_ = {"1", "0", "0", "1"};
   parse_arguments(narg, arg);
 }
@@ -62,6 +63,13 @@ void FixRveServo::post_create()
     error->fix_error(FLERR, this, "requires 'atom_style sphere'");
   if (atom->map_style == 0)
     error->fix_error(FLERR, this, "requires 'atom_modify map array' before the atoms are read");
+  if (restored_)
+  {
+    for (const auto& p : frame_.particles)
+      frame_local_.push_back(local_index(p.tag)); // all frame particles are there
+    create_contacts_compute();
+    return;
+  }
   if (update->ntimestep != 0)
     error->fix_error(FLERR, this, "must be defined before the first run (reference frame = current "
                                   "positions at definition)");
@@ -118,7 +126,11 @@ void FixRveServo::post_create()
   for (std::size_t q = 0; q < nq; ++q)
     frame_local_[q] = local_index(frame_.particles[q].tag);
   frame_moment_.assign(nq, 0.0);
+  create_contacts_compute();
+}
 
+void FixRveServo::create_contacts_compute()
+{
   // Per-contact data (forces, branch vectors) come from LIGGGHTS' own
   // compute, which re-evaluates the pair style read-only (no history update).
   contacts_compute_id_ = std::string(id) + "_contacts";

@@ -47,6 +47,7 @@
 #include "fix.h"
 #include "rve_homogenisation.h"
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -93,6 +94,8 @@ public:
   int modify_param(int, char**) override;
   double compute_vector(int) override;
   double memory_usage() override;
+  void write_restart(FILE*) override;
+  void restart(char*) override;
 
   /// Starts a new solve under macro deformation F (row-major).
   void set_deformation(const fe2dem::Mat2& F);
@@ -137,6 +140,7 @@ private:
   // --- helpers ------------------------------------------------------------
   int local_index(int tag) const;
   void collect_contacts();
+  void create_contacts_compute();
   void half_kick_inner();
   /// Moment of inertia of particle i (disc or sphere factor).
   double inertia_of(int i) const
@@ -209,6 +213,7 @@ private:
   int n_inner_ = 0;
   int checks_since_contact_pass_ = 0;
   double dtv_ = 0.0, dtf_ = 0.0;
+  bool restored_ = false; ///< state came from a restart file
 };
 } // namespace LAMMPS_NS
 

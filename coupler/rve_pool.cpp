@@ -1,0 +1,172 @@
+#include "rve_pool.h"
+
+#include <algorithm>
+#include <climits>
+#include <numeric>
+#include <sstream>
+
+namespace fe2dem
+{
+namespace
+{
+/// One IP's result as it travels between ranks.
+struct Record
+{
+  int index;
+  LAMMPS_NS::FixRveServo::Result result;
+};
+} // namespace
+
+RvePool::RvePool(MPI_Comm comm, const RveSetup& setup, HistoryMode mode,
+                 const std::vector<QuadraturePoint>& points)
+  : comm_(comm), setup_(setup), mode_(mode), points_(points), owner_(points.size()),
+    cost_(points.size(), 0.0)
+{
+  MPI_Comm_rank(comm_, &rank_);
+  MPI_Comm_size(comm_, &n_ranks_);
+  const std::size_t n = points_.size();
+  for (std::size_t k = 0; k < n; ++k)
+    owner_[k] = static_cast<int>(k * n_ranks_ / std::max<std::size_t>(n, 1));
+  for (std::size_t k = 0; k < n; ++k)
+    if (owner_[k] == rank_)
+      local_[k] = std::make_unique<ServoRve>(setup_, mode_);
+}
+
+std::vector<RveResponse> RvePool::solve(const std::vector<Eigen::Matrix2d>& F)
+{
+  if (F.size() != points_.size())
+    throw std::invalid_argument("RvePool::solve: " + std::to_string(F.size()) +
+                                " deformation gradients for " + std::to_string(points_.size()) +
+                                " quadrature points");
+  committed_ = false;
+  const double t0 = MPI_Wtime();
+  std::vector<Record> mine;
+  int failed = INT_MAX;
+  std::string reason;
+  for (auto& [k, rve] : local_)
+  {
+    Record r{static_cast<int>(k), {}};
+    try
+    {
+      r.result = rve->solve(macro_to_rve(F[k]));
+    }
+    catch (const std::exception& e)
+    {
+      if (static_cast<int>(k) < failed)
+      {
+        failed = static_cast<int>(k);
+        reason = e.what();
+      }
+      r.result = rve->result();
+    }
+    mine.push_back(r);
+  }
+  local_seconds_ = MPI_Wtime() - t0;
+
+  // Failures first, so that every rank raises the same error.
+  int first_failed = INT_MAX;
+  MPI_Allreduce(&failed, &first_failed, 1, MPI_INT, MPI_MIN, comm_);
+  if (first_failed != INT_MAX)
+  {
+    int length = static_cast<int>(reason.size());
+    MPI_Bcast(&length, 1, MPI_INT, owner_[first_failed], comm_);
+    reason.resize(length);
+    MPI_Bcast(&reason[0], length, MPI_CHAR, owner_[first_failed], comm_);
+    const QuadraturePoint& p = points_[first_failed];
+    std::ostringstream msg;
+    msg << "RVE of IP " << p.id << " at (" << p.x << ", " << p.y << "), load step "
+        << load_step_ + 1 << ": " << reason;
+    throw CouplerError(p.id, msg.str());
+  }
+
+  // rve_to_macro: every rank gets every IP's result.
+  const int my_bytes = static_cast<int>(mine.size() * sizeof(Record));
+  std::vector<int> counts(n_ranks_), displs(n_ranks_);
+  MPI_Allgather(&my_bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_);
+  std::exclusive_scan(counts.begin(), counts.end(), displs.begin(), 0);
+  std::vector<Record> all(points_.size());
+  MPI_Allgatherv(mine.data(), my_bytes, MPI_BYTE, all.data(), counts.data(), displs.data(),
+                 MPI_BYTE, comm_);
+  std::vector<RveResponse> out(points_.size());
+  for (const Record& r : all)
+  {
+    out[r.index] = rve_to_macro(r.result);
+    cost_[r.index] = static_cast<double>(r.result.dem_steps);
+  }
+  return out;
+}
+
+void RvePool::commit()
+{
+  for (auto& [k, rve] : local_)
+    rve->commit();
+  ++load_step_;
+  committed_ = true;
+}
+
+void RvePool::rollback()
+{
+  for (auto& [k, rve] : local_)
+    rve->rollback();
+  committed_ = true;
+}
+
+void RvePool::require_committed(const char* what) const
+{
+  if (!committed_)
+    throw std::logic_error(std::string("RvePool::") + what +
+                           " needs the committed state: call it right after commit()");
+}
+
+void RvePool::move(std::size_t k, int to)
+{
+  require_committed("move");
+  const int from = owner_[k];
+  if (from == to)
+    return;
+  if (rank_ == from)
+  {
+    const std::vector<char> state = local_.at(k)->serialise();
+    const long n = static_cast<long>(state.size());
+    MPI_Send(&n, 1, MPI_LONG, to, 0, comm_);
+    MPI_Send(state.data(), static_cast<int>(n), MPI_CHAR, to, 1, comm_);
+    local_.erase(k);
+  }
+  else if (rank_ == to)
+  {
+    long n = 0;
+    MPI_Recv(&n, 1, MPI_LONG, from, 0, comm_, MPI_STATUS_IGNORE);
+    std::vector<char> state(n);
+    MPI_Recv(state.data(), static_cast<int>(n), MPI_CHAR, from, 1, comm_, MPI_STATUS_IGNORE);
+    local_[k] = ServoRve::restore(setup_, state, mode_);
+  }
+  owner_[k] = to;
+}
+
+int RvePool::rebalance()
+{
+  require_committed("rebalance");
+  // Longest processing time first on identical (gathered) costs: the same
+  // placement on every rank, ties broken by index and rank number.
+  std::vector<std::size_t> order(points_.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return cost_[a] > cost_[b]; });
+  std::vector<double> load(n_ranks_, 0.0);
+  std::vector<int> target(points_.size());
+  for (std::size_t k : order)
+  {
+    const int r = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+    target[k] = r;
+    load[r] += std::max(cost_[k], 1.0);
+  }
+  int moved = 0;
+  for (std::size_t k = 0; k < points_.size(); ++k)
+    if (target[k] != owner_[k])
+    {
+      move(k, target[k]);
+      ++moved;
+    }
+  return moved;
+}
+} // namespace fe2dem

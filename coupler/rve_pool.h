@@ -1,0 +1,98 @@
+/**
+ * @file rve_pool.h
+ * The RVEs of all quadrature points of a macro problem, spread over the
+ * ranks of an MPI communicator (one LIGGGHTS instance per IP, each on
+ * MPI_COMM_SELF of its rank).
+ *
+ * Every rank passes the same list of quadrature points and, per iteration,
+ * the same vector of F (macro_to_rve); every rank receives the responses of
+ * all IPs (rve_to_macro). An RVE's trajectory depends only on its own input,
+ * and moving it between ranks goes through its serialised state, so results
+ * are bitwise independent of the number of ranks and of placement.
+ */
+#pragma once
+
+#include "rve_response.h"
+#include "servo_rve.h"
+
+#include <Eigen/Dense>
+#include <mpi.h>
+
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+namespace fe2dem
+{
+struct QuadraturePoint
+{
+  long id = 0;          ///< global IP id (used in messages)
+  double x = 0, y = 0;  ///< position in the macro domain
+  double weight = 1.0;  ///< optional a-priori cost weight (unused once costs are measured)
+};
+
+/// An RVE of the pool failed; raised on every rank with the same message.
+class CouplerError : public std::runtime_error
+{
+public:
+  CouplerError(long ip, const std::string& what) : std::runtime_error(what), ip_id(ip) {}
+  long ip_id;
+};
+
+class RvePool
+{
+public:
+  /**
+   * Creates and relaxes the RVEs of this rank's share of @p points (block
+   * placement in list order) and commits their initial state.
+   * @pre every rank passes the same @p points and @p setup.
+   */
+  RvePool(MPI_Comm comm, const RveSetup& setup, HistoryMode mode,
+          const std::vector<QuadraturePoint>& points);
+
+  /**
+   * One trial solve of every RVE. @p F holds one deformation gradient per
+   * point, in the order of the constructor's list, identical on all ranks.
+   * @return the responses of all points, on every rank.
+   * @throws CouplerError naming IP id, position, load step and reason if
+   *         any RVE fails (on all ranks).
+   */
+  std::vector<RveResponse> solve(const std::vector<Eigen::Matrix2d>& F);
+  /// Accepts the last solves as the converged load step.
+  void commit();
+  /// Returns every RVE to its last committed state.
+  void rollback();
+  /**
+   * Re-places RVEs by the cost (DEM steps) of their last solve, largest
+   * first onto the least-loaded rank, and moves those whose rank changes.
+   * @pre called right after commit(). @return number of RVEs moved.
+   */
+  int rebalance();
+  /// Moves RVE @p k to rank @p to through its serialised state. @pre after commit().
+  void move(std::size_t k, int to);
+
+  int owner(std::size_t k) const { return owner_[k]; }
+  std::size_t size() const { return points_.size(); }
+  std::size_t n_local() const { return local_.size(); }
+  int load_step() const { return load_step_; }
+  /// Cost (DEM steps) of each RVE's last solve, identical on all ranks.
+  const std::vector<double>& costs() const { return cost_; }
+  /// Wall seconds this rank spent in RVE solves during the last solve().
+  double last_local_seconds() const { return local_seconds_; }
+
+private:
+  void require_committed(const char* what) const;
+  MPI_Comm comm_;
+  int rank_ = 0, n_ranks_ = 1;
+  RveSetup setup_;
+  HistoryMode mode_;
+  std::vector<QuadraturePoint> points_;
+  std::vector<int> owner_;
+  std::map<std::size_t, std::unique_ptr<ServoRve>> local_;
+  std::vector<double> cost_;
+  int load_step_ = 0;
+  bool committed_ = true;
+  double local_seconds_ = 0.0;
+};
+} // namespace fe2dem

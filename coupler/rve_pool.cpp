@@ -1,5 +1,7 @@
 #include "rve_pool.h"
 
+#include "template_check.h"
+
 #include <algorithm>
 #include <climits>
 #include <numeric>
@@ -24,6 +26,25 @@ RvePool::RvePool(MPI_Comm comm, const RveSetup& setup, HistoryMode mode,
 {
   MPI_Comm_rank(comm_, &rank_);
   MPI_Comm_size(comm_, &n_ranks_);
+  // Check the template once, in a child process, before any instance exists.
+  std::string problem;
+  if (rank_ == 0)
+    try
+    {
+      check_rve_template(setup_);
+    }
+    catch (const TemplateError& e)
+    {
+      problem = e.what();
+    }
+  int length = static_cast<int>(problem.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, comm_);
+  if (length > 0)
+  {
+    problem.resize(length);
+    MPI_Bcast(&problem[0], length, MPI_CHAR, 0, comm_);
+    throw TemplateError(problem);
+  }
   const std::size_t n = points_.size();
   for (std::size_t k = 0; k < n; ++k)
     owner_[k] = static_cast<int>(k * n_ranks_ / std::max<std::size_t>(n, 1));

@@ -1,5 +1,7 @@
 #include "rve_path_runner.h"
 
+#include "template_check.h"
+
 #include <mpi.h>
 
 #include <algorithm>
@@ -12,8 +14,18 @@
 
 namespace fe2dem::rve_driver
 {
+namespace
+{
+/// Checks the template in a child process first: LIGGGHTS would exit(1).
+RveSetup checked(const RveSetup& setup)
+{
+  check_rve_template(setup);
+  return setup;
+}
+} // namespace
+
 RvePathRunner::RvePathRunner(const Parameters& parameters)
-  : prm_(parameters), rve_(parameters.rve.setup("none"))
+  : prm_(parameters), rve_(checked(parameters.rve.setup("none")))
 {
   // A first guess of the 2D bulk stiffness d sigma / d lambda ~ k_n; the
   // secant iteration corrects it after the first trial.

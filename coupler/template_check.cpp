@@ -1,0 +1,128 @@
+#include "template_check.h"
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+extern char** environ;
+
+namespace fe2dem
+{
+namespace
+{
+std::string first_words(const std::string& line, int n)
+{
+  std::istringstream s(line);
+  std::string w, out;
+  for (int k = 0; k < n && (s >> w); ++k)
+    out += (k ? " " : "") + w;
+  return out;
+}
+
+/// Line number of the template command whose first two words match @p command.
+int find_line(const std::string& file, const std::string& command)
+{
+  const std::string key = first_words(command, 2);
+  std::ifstream in(file);
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n)
+    if (!key.empty() && first_words(line, 2) == key)
+      return n;
+  return 0;
+}
+
+std::string executable()
+{
+  if (const char* env = std::getenv("FE2DEM_LIGGGHTS"))
+    return env;
+  return FE2DEM_LIGGGHTS_EXE;
+}
+} // namespace
+
+void check_rve_template(const RveSetup& setup)
+{
+  namespace fs = std::filesystem;
+  if (!fs::is_regular_file(setup.template_file))
+    throw TemplateError("RVE template '" + setup.template_file + "' does not exist or is not a file");
+  const std::string base = (fs::temp_directory_path() / ("fe2dem-check-" + std::to_string(getpid()))).string();
+  const std::string wrapper = base + ".in", output = base + ".out";
+  {
+    std::ofstream w(wrapper);
+    w << "include " << setup.template_file << "\nrun 0 post no\n";
+  }
+  std::vector<std::string> args = {executable(), "-echo", "screen", "-log", "none"};
+  for (const auto& [name, value] : setup.variables)
+    args.insert(args.end(), {"-var", name, value});
+  args.insert(args.end(), {"-in", wrapper});
+  std::vector<char*> argv;
+  for (auto& a : args)
+    argv.push_back(&a[0]);
+  argv.push_back(nullptr);
+  // A child of an MPI rank must not see the launcher's variables, or it
+  // would try to join the parent's job instead of starting as a singleton.
+  std::vector<std::string> env;
+  for (char** e = environ; *e; ++e)
+    if (std::strncmp(*e, "OMPI_", 5) && std::strncmp(*e, "PMIX_", 5) && std::strncmp(*e, "PMI_", 4) &&
+        std::strncmp(*e, "OPAL_", 5))
+      env.emplace_back(*e);
+  std::vector<char*> envp;
+  for (auto& e : env)
+    envp.push_back(&e[0]);
+  envp.push_back(nullptr);
+
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, output.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data());
+  posix_spawn_file_actions_destroy(&actions);
+  int status = 0;
+  if (spawned == 0)
+    waitpid(pid, &status, 0);
+  std::ifstream in(output);
+  std::vector<std::string> lines;
+  for (std::string l; std::getline(in, l);)
+    lines.push_back(l);
+  std::error_code ec;
+  fs::remove(wrapper, ec);
+  fs::remove(output, ec);
+  if (spawned != 0)
+    throw TemplateError("cannot start '" + args[0] + "' to check the RVE template: " +
+                        std::strerror(spawned) + " (set FE2DEM_LIGGGHTS to its path)");
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0)
+    return;
+
+  // The echo shows each command before it runs: the one before ERROR failed.
+  std::string message = "LIGGGHTS stopped without a message (exit status " +
+                        std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")";
+  std::string command;
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    if (lines[i].rfind("ERROR", 0) == 0)
+    {
+      message = lines[i];
+      for (std::size_t j = i; j-- > 0;)
+        if (!lines[j].empty() && lines[j][0] != ' ' && lines[j].rfind("WARNING", 0) != 0)
+        {
+          command = lines[j];
+          break;
+        }
+      break;
+    }
+  const int line = command.empty() ? 0 : find_line(setup.template_file, command);
+  std::ostringstream msg;
+  msg << setup.template_file << ":" << (line > 0 ? std::to_string(line) : std::string("?"))
+      << ": the RVE template fails in LIGGGHTS: " << message;
+  if (!command.empty())
+    msg << " (command: " << command << ")";
+  throw TemplateError(msg.str());
+}
+} // namespace fe2dem

@@ -15,6 +15,7 @@ namespace
 struct Record
 {
   int index;
+  double seconds; ///< wall time of the solve: the cost used for placement
   LAMMPS_NS::FixRveServo::Result result;
 };
 } // namespace
@@ -66,7 +67,7 @@ std::vector<RveResponse> RvePool::solve(const std::vector<Eigen::Matrix2d>& F)
   std::string reason;
   for (auto& [k, rve] : local_)
   {
-    Record r{static_cast<int>(k), {}};
+    Record r{static_cast<int>(k), 0.0, {}};
     try
     {
       r.result = rve->solve(macro_to_rve(F[k]));
@@ -80,6 +81,7 @@ std::vector<RveResponse> RvePool::solve(const std::vector<Eigen::Matrix2d>& F)
       }
       r.result = rve->result();
     }
+    r.seconds = rve->last_solve_seconds();
     mine.push_back(r);
   }
   local_seconds_ = MPI_Wtime() - t0;
@@ -112,7 +114,7 @@ std::vector<RveResponse> RvePool::solve(const std::vector<Eigen::Matrix2d>& F)
   for (const Record& r : all)
   {
     out[r.index] = rve_to_macro(r.result);
-    cost_[r.index] = static_cast<double>(r.result.dem_steps);
+    cost_[r.index] = r.seconds;
   }
   return out;
 }
@@ -168,7 +170,9 @@ int RvePool::rebalance()
 {
   require_committed("rebalance");
   // Longest processing time first on identical (gathered) costs: the same
-  // placement on every rank, ties broken by index and rank number.
+  // placement on every rank, ties broken by index and rank number. Costs
+  // are measured seconds, so placement varies from run to run; results do
+  // not, since an RVE's trajectory does not depend on where it runs.
   std::vector<std::size_t> order(points_.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),
@@ -179,8 +183,16 @@ int RvePool::rebalance()
   {
     const int r = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
     target[k] = r;
-    load[r] += std::max(cost_[k], 1.0);
+    load[r] += cost_[k];
   }
+  // Moving costs a serialise/restore per RVE: keep the current placement
+  // unless the new one lowers the most loaded rank by more than 2 %.
+  std::vector<double> current(n_ranks_, 0.0);
+  for (std::size_t k = 0; k < points_.size(); ++k)
+    current[owner_[k]] += cost_[k];
+  if (*std::max_element(current.begin(), current.end()) <=
+      1.02 * *std::max_element(load.begin(), load.end()))
+    return 0;
   int moved = 0;
   for (std::size_t k = 0; k < points_.size(); ++k)
     if (target[k] != owner_[k])

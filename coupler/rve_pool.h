@@ -64,8 +64,9 @@ public:
   /// Returns every RVE to its last committed state.
   void rollback();
   /**
-   * Re-places RVEs by the cost (DEM steps) of their last solve, largest
-   * first onto the least-loaded rank, and moves those whose rank changes.
+   * Re-places RVEs by the cost (wall seconds) of their last solve, largest
+   * first onto the least-loaded rank, and moves those whose rank changes,
+   * unless that lowers the most loaded rank's cost by 2 % or less.
    * @pre called right after commit(). @return number of RVEs moved.
    */
   int rebalance();
@@ -76,7 +77,7 @@ public:
   std::size_t size() const { return points_.size(); }
   std::size_t n_local() const { return local_.size(); }
   int load_step() const { return load_step_; }
-  /// Cost (DEM steps) of each RVE's last solve, identical on all ranks.
+  /// Cost (wall seconds) of each RVE's last solve, identical on all ranks.
   const std::vector<double>& costs() const { return cost_; }
   /// Wall seconds this rank spent in RVE solves during the last solve().
   double last_local_seconds() const { return local_seconds_; }

@@ -15,6 +15,7 @@
 
 #include "fix_rve_servo.h"
 #include "liggghts_instance.h"
+#include "rve.h"
 
 #include <map>
 #include <memory>
@@ -51,7 +52,7 @@ public:
   LAMMPS_NS::FixRveServo::Status status;
 };
 
-class ServoRve
+class ServoRve : public Rve
 {
 public:
   using Result = LAMMPS_NS::FixRveServo::Result;
@@ -61,7 +62,7 @@ public:
   /// Rebuilds an RVE from serialise() bytes (same template and variables).
   static std::unique_ptr<ServoRve> restore(const RveSetup& setup, const std::vector<char>& state,
                                            HistoryMode mode = HistoryMode::continuous);
-  ~ServoRve();
+  ~ServoRve() override;
   ServoRve(const ServoRve&) = delete;
   ServoRve& operator=(const ServoRve&) = delete;
 
@@ -72,12 +73,14 @@ public:
    *         particle or a blow-up.
    */
   const Result& solve(const Mat2& F);
+  /// Rve interface: macro_to_rve, solve, rve_to_macro.
+  RveResponse solve(const Eigen::Matrix2d& F) override { return rve_to_macro(solve(macro_to_rve(F))); }
   /// Accepts the current state as the converged load step.
-  void commit();
+  void commit() override;
   /// Returns exactly to the last committed state.
-  void rollback();
+  void rollback() override;
   /// The full current state as bytes (a LIGGGHTS restart image).
-  std::vector<char> serialise();
+  std::vector<char> serialise() override;
 
   const Result& result() const { return fix_->result(); }
   LAMMPS_NS::FixRveServo& fix() { return *fix_; }

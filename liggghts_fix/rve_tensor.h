@@ -8,6 +8,10 @@
  */
 #pragma once
 
+// Vec2{a, b} and Mat2{a, b, c, d} rely on brace elision of std::array;
+// deal.II's flags turn -Wmissing-braces on for every file that includes this.
+#pragma GCC diagnostic ignored "-Wmissing-braces"
+
 #include <array>
 #include <cmath>
 

@@ -37,6 +37,12 @@ public:
     put(static_cast<std::uint64_t>(s.size()));
     bytes_.insert(bytes_.end(), s.begin(), s.end());
   }
+  /// Same call for writing and reading: see ByteReader::io.
+  template <class T>
+  void io(const T& v)
+  {
+    put(v);
+  }
   const std::vector<char>& bytes() const { return bytes_; }
 
 private:
@@ -71,6 +77,12 @@ public:
     need(n);
     s.assign(p_, p_ + n);
     p_ += n;
+  }
+  /// Same call for writing and reading, so that one field list serves both.
+  template <class T>
+  void io(T& v)
+  {
+    get(v);
   }
   bool at_end() const { return p_ == end_; }
 

@@ -141,6 +141,8 @@ private:
   int local_index(int tag) const;
   void collect_contacts();
   void create_contacts_compute();
+  template <class Stream>
+  void transfer_state(Stream& s);
   void half_kick_inner();
   /// Moment of inertia of particle i (disc or sphere factor).
   double inertia_of(int i) const

@@ -8,6 +8,7 @@
 #include "error.h"
 
 #include <cstdio>
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -20,50 +21,57 @@ constexpr std::uint32_t state_magic = 0x46453244; // "FE2D"
 constexpr std::uint32_t state_version = 1;
 } // namespace
 
+// The one list of everything a restart must carry, used to write and read.
+template <class Stream>
+void FixRveServo::transfer_state(Stream& s)
+{
+  // frame topology (the reference configuration is not the current one)
+  s.io(frame_.origin);
+  s.io(frame_.Lx);
+  s.io(frame_.Ly);
+  s.io(frame_.particles);
+  s.io(frame_.pairs);
+  s.io(frame_.corners);
+  s.io(r_min_);
+  s.io(r_max_);
+  s.io(area_particles_);
+  s.io(n_particles_);
+  s.io(n_inner_);
+  s.io(tag_to_dense_);
+  // servo unknowns and memory
+  s.io(w_);
+  s.io(theta_pair_);
+  s.io(theta_corner_);
+  s.io(servo_memory_);
+  s.io(servo_memory_corner_);
+  s.io(theta_frame_);
+  // frame motion in progress
+  s.io(move_start_);
+  s.io(move_target_);
+  s.io(rot_start_);
+  s.io(rot_target_);
+  s.io(move_steps_);
+  s.io(move_done_);
+  // solve state and last results
+  s.io(frame_force_);
+  s.io(frame_moment_);
+  s.io(unbalanced_sq_sum_);
+  s.io(F_);
+  for (std::string& f : F_input_)
+    s.io(f);
+  s.io(status_);
+  s.io(solve_pending_);
+  s.io(failure_reason_);
+  s.io(result_);
+  s.io(checks_since_contact_pass_);
+}
+
 void FixRveServo::write_restart(FILE* fp)
 {
   ByteWriter w;
   w.put(state_magic);
   w.put(state_version);
-  // frame topology (the reference configuration is not the current one)
-  w.put(frame_.origin);
-  w.put(frame_.Lx);
-  w.put(frame_.Ly);
-  w.put(frame_.particles);
-  w.put(frame_.pairs);
-  w.put(frame_.corners);
-  w.put(r_min_);
-  w.put(r_max_);
-  w.put(area_particles_);
-  w.put(n_particles_);
-  w.put(n_inner_);
-  w.put(tag_to_dense_);
-  // servo unknowns and memory
-  w.put(w_);
-  w.put(theta_pair_);
-  w.put(theta_corner_);
-  w.put(servo_memory_);
-  w.put(servo_memory_corner_);
-  w.put(theta_frame_);
-  // frame motion in progress
-  w.put(move_start_);
-  w.put(move_target_);
-  w.put(rot_start_);
-  w.put(rot_target_);
-  w.put(move_steps_);
-  w.put(move_done_);
-  // solve state and last results
-  w.put(frame_force_);
-  w.put(frame_moment_);
-  w.put(unbalanced_sq_sum_);
-  w.put(F_);
-  for (const std::string& s : F_input_)
-    w.put(s);
-  w.put(status_);
-  w.put(solve_pending_);
-  w.put(failure_reason_);
-  w.put(result_);
-  w.put(checks_since_contact_pass_);
+  transfer_state(w);
   const auto& bytes = w.bytes();
   if (comm->me == 0)
   {
@@ -76,48 +84,14 @@ void FixRveServo::write_restart(FILE* fp)
 void FixRveServo::restart(char* buf)
 {
   // LIGGGHTS hands over the record without its length; the record checks
-  // its own framing through the magic number and the final position.
+  // its own framing through the magic number and version.
   ByteReader r(buf, static_cast<std::size_t>(1) << 40);
   std::uint32_t magic = 0, version = 0;
   r.get(magic);
   r.get(version);
   if (magic != state_magic || version != state_version)
     error->fix_error(FLERR, this, "restart data is not from this version of fix rve/servo");
-  r.get(frame_.origin);
-  r.get(frame_.Lx);
-  r.get(frame_.Ly);
-  r.get(frame_.particles);
-  r.get(frame_.pairs);
-  r.get(frame_.corners);
-  r.get(r_min_);
-  r.get(r_max_);
-  r.get(area_particles_);
-  r.get(n_particles_);
-  r.get(n_inner_);
-  r.get(tag_to_dense_);
-  r.get(w_);
-  r.get(theta_pair_);
-  r.get(theta_corner_);
-  r.get(servo_memory_);
-  r.get(servo_memory_corner_);
-  r.get(theta_frame_);
-  r.get(move_start_);
-  r.get(move_target_);
-  r.get(rot_start_);
-  r.get(rot_target_);
-  r.get(move_steps_);
-  r.get(move_done_);
-  r.get(frame_force_);
-  r.get(frame_moment_);
-  r.get(unbalanced_sq_sum_);
-  r.get(F_);
-  for (std::string& s : F_input_)
-    r.get(s);
-  r.get(status_);
-  r.get(solve_pending_);
-  r.get(failure_reason_);
-  r.get(result_);
-  r.get(checks_since_contact_pass_);
+  transfer_state(r);
   if (std::abs(frame_.Lx - Lx_) > 1e-12 * Lx_ || std::abs(frame_.Ly - Ly_) > 1e-12 * Ly_)
     error->fix_error(FLERR, this, "keyword 'cell' differs from the cell in the restart data");
   restored_ = true;

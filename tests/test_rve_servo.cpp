@@ -104,7 +104,7 @@ void check_servo(Checker& check)
 void check_agreement(Checker& check)
 {
   ServoRve rve(setup());
-  const Result r = rve.solve({0.997, 0.002, 0.0, 0.994});
+  const Result r = rve.solve(Mat2{0.997, 0.002, 0.0, 0.994});
   check.less("|sigma - sigma_LW| / |sigma_LW| < 1 %", rel(r.sigma, r.sigma_lw), 0.01);
   // LIGGGHTS' own virial over the whole box; convert to the cell.
   auto& lmp = rve.instance();
@@ -177,9 +177,9 @@ void check_rotation(Checker& check)
   for (const char* mode : {"free", "locked"})
   {
     ServoRve rve(setup(mode));
-    rve.solve({0.998, 0.0, 0.0, 0.998});
+    rve.solve(Mat2{0.998, 0.0, 0.0, 0.998});
     for (int s = 1; s <= 4; ++s)
-      rve.solve({0.998, 0.005 * s, 0.0, 0.998});
+      rve.solve(Mat2{0.998, 0.005 * s, 0.0, 0.998});
     const Result& r = rve.result();
     tau[k++] = std::abs(0.5 * (r.sigma[1] + r.sigma[2]));
     std::cout << "  " << mode << ": |sigma12| = " << tau[k - 1] << " at gamma 0.02, max inner |omega| = "
@@ -221,7 +221,7 @@ void check_frozen_inner(Checker& check)
 void check_unbalanced(Checker& check)
 {
   ServoRve rve(setup("free", {{"relax", "unbalanced"}, {"relax_tol", "0.01"}}));
-  const Result r = rve.solve({0.998, 0.0, 0.0, 0.996});
+  const Result r = rve.solve(Mat2{0.998, 0.0, 0.0, 0.996});
   check.less("r_a <= 1e-4 with relax unbalanced", r.residual, 1e-4 * (1 + 1e-12));
   check.less("unbalanced-force index <= 0.01 (R13)", r.unbalanced, 0.01);
   check.less("|sigma - sigma_LW| / |sigma_LW| < 1 %", rel(r.sigma, r.sigma_lw), 0.01);

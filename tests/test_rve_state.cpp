@@ -45,7 +45,7 @@ void check_rollback(Checker& check)
   rve.solve(F1);
   rve.commit();
   const Result a = rve.solve(F2);
-  rve.solve({0.99, 0.0, 0.0, 0.99}); // wander off
+  rve.solve(Mat2{0.99, 0.0, 0.0, 0.99}); // wander off
   rve.rollback();
   const Result b = rve.solve(F2);
   check.truth("solve, rollback, same solve: bitwise identical results", same_bits(a, b), describe(a, b));
@@ -99,8 +99,8 @@ void check_history(Checker& check)
     {
       const double prev = 1.0 - 0.004 * (step - 1);
       const double f = prev + frac * (target - prev);
-      c2.solve({1.0, 0.0, 0.0, f});
-      k2.solve({1.0, 0.0, 0.0, f});
+      c2.solve(Mat2{1.0, 0.0, 0.0, f});
+      k2.solve(Mat2{1.0, 0.0, 0.0, f});
     }
     c2.commit();
     k2.commit();

@@ -131,7 +131,7 @@ void RvePathRunner::run_biaxial_stage()
         [F22](double f) { return Mat2{f, 0.0, 0.0, F22}; },
         [](const Result& r) { return r.sigma[0]; }, "the lateral stress sigma11");
     else
-      dem_steps_in_step_ += rve_.solve({F11, 0.0, 0.0, F22}).dem_steps;
+      dem_steps_in_step_ += rve_.solve(Mat2{F11, 0.0, 0.0, F22}).dem_steps;
     F_ = {F11, 0.0, 0.0, F22};
     write_row(rve_.result(), its);
   }

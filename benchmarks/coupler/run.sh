@@ -5,6 +5,7 @@
 # `name value unit` lines, appended to results.csv with machine/date/commit.
 # Usage: benchmarks/coupler/run.sh [BUILD_DIR] [N] [ITERATIONS] [REPEATS] [MODE]
 set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/../common.sh"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 build="$(realpath -m "${1:-$root/build}")"
@@ -22,9 +23,8 @@ for ((k = 0; k < repeats; ++k)); do
   mem="$(awk '/resident_per_rve/ {print $2}' <<<"$o1")"
   reb="$(awk '/rebalance_moved/ {m=$2} /rebalance_wall/ {w=$2} END {print m " RVEs in " w " s"}' <<<"$o2")"
 done
-median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2) ? a[(NR+1)/2] : 0.5*(a[NR/2]+a[NR/2+1])}'; }
 m1=$(median "${t1[@]}"); m2=$(median "${t2[@]}"); mi=$(median "${imb[@]}")
-speedup=$(awk -v a="$m1" -v b="$m2" 'BEGIN {printf "%.3f", a / b}')
+speedup=$(ratio "$m1" "$m2")
 echo "rves $n count"
 echo "load_steps $iterations steps"
 echo "history_mode $mode"
@@ -36,7 +36,5 @@ echo "resident_per_rve $mem bytes"
 echo "rebalance_2_ranks_last $reb"
 echo "samples_1_rank ${t1[*]}"
 echo "samples_2_ranks ${t2[*]}"
-csv="$here/results.csv"
-[[ -f "$csv" ]] || echo "date,commit,machine,rves,load_steps,mode,wall_1,wall_2,speedup,imbalance,resident_per_rve" > "$csv"
-machine="$(nproc)cores-$(awk -F: '/model name/ {gsub(/^ +/, "", $2); print $2; exit}' /proc/cpuinfo | tr ', ' '__')"
-echo "$(date -u +%FT%TZ),$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo none),$machine,$n,$iterations,$mode,$m1,$m2,$speedup,$mi,$mem" >> "$csv"
+append_result "$here/results.csv" "rves,load_steps,mode,wall_1,wall_2,speedup,imbalance,resident_per_rve" \
+  "$n,$iterations,$mode,$m1,$m2,$speedup,$mi,$mem"

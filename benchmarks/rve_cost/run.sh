@@ -7,6 +7,7 @@
 # results.csv with machine, date and commit.
 # Usage: benchmarks/rve_cost/run.sh [BUILD_DIR] [PACKING_PREFIX] [STEPS] [REPEATS]
 set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/../common.sh"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 build="$(realpath -m "${1:-$root/build}")"
@@ -27,10 +28,8 @@ for ((k = 0; k < repeats; ++k)); do
   b=$(awk -v t="$loop" -v n="$steps" 'BEGIN {printf "%.4f", 1e6 * t / n}')
   coupler+=("$c"); coupler_sparse+=("$cs"); bare+=("$b")
 done
-median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2) ? a[(NR+1)/2] : 0.5*(a[NR/2]+a[NR/2+1])}'; }
 mc=$(median "${coupler[@]}"); mcs=$(median "${coupler_sparse[@]}"); mb=$(median "${bare[@]}")
-ratio=$(awk -v a="$mc" -v b="$mb" 'BEGIN {printf "%.4f", a / b}')
-ratio_sparse=$(awk -v a="$mcs" -v b="$mb" 'BEGIN {printf "%.4f", a / b}')
+ratio=$(ratio "$mc" "$mb"); ratio_sparse=$(ratio "$mcs" "$mb")
 natoms=$(awk '/atoms$/ {print $1; exit}' "$packing.rve.data")
 echo "particles $natoms count"
 echo "steps $steps steps"
@@ -40,13 +39,11 @@ echo "coupler_us_per_step $mc us"
 echo "coupler_over_bare $ratio ratio"
 echo "coupler_check1000_us_per_step $mcs us"
 echo "coupler_check1000_over_bare $ratio_sparse ratio"
-minimum() { printf '%s\n' "$@" | sort -g | head -1; }
-min_ratio=$(awk -v a="$(minimum "${coupler[@]}")" -v b="$(minimum "${bare[@]}")" 'BEGIN {printf "%.4f", a / b}')
+min_ratio=$(ratio "$(minimum "${coupler[@]}")" "$(minimum "${bare[@]}")")
 echo "coupler_over_bare_of_minima $min_ratio ratio"
 echo "all_coupler_samples ${coupler[*]}"
 echo "all_coupler_check1000_samples ${coupler_sparse[*]}"
 echo "all_bare_samples ${bare[*]}"
-csv="$here/results.csv"
-[[ -f "$csv" ]] || echo "date,commit,machine,particles,steps,repeats,bare_us_per_step,coupler_us_per_step,ratio,coupler_check1000_us_per_step,ratio_check1000" > "$csv"
-machine="$(nproc)cores-$(awk -F: '/model name/ {gsub(/^ +/, "", $2); print $2; exit}' /proc/cpuinfo | tr ', ' '__')"
-echo "$(date -u +%FT%TZ),$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo none),$machine,$natoms,$steps,$repeats,$mb,$mc,$ratio,$mcs,$ratio_sparse" >> "$csv"
+append_result "$here/results.csv" \
+  "particles,steps,repeats,bare_us_per_step,coupler_us_per_step,ratio,coupler_check1000_us_per_step,ratio_check1000" \
+  "$natoms,$steps,$repeats,$mb,$mc,$ratio,$mcs,$ratio_sparse"

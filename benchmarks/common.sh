@@ -1,0 +1,13 @@
+# Shared helpers of the benchmark scripts (source it).
+median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2) ? a[(NR+1)/2] : 0.5*(a[NR/2]+a[NR/2+1])}'; }
+minimum() { printf '%s\n' "$@" | sort -g | head -1; }
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.4f", a / b}'; }
+# append_result CSV HEADER VALUES: one row "date,commit,machine,VALUES".
+append_result() {
+  local csv="$1" header="$2" values="$3" root
+  root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+  [[ -f "$csv" ]] || echo "date,commit,machine,$header" > "$csv"
+  local machine
+  machine="$(nproc)cores-$(awk -F: '/model name/ {gsub(/^ +/, "", $2); print $2; exit}' /proc/cpuinfo | tr ', ' '__')"
+  echo "$(date -u +%FT%TZ),$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo none),$machine,$values" >> "$csv"
+}

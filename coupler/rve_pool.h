@@ -66,7 +66,7 @@ public:
   /**
    * Re-places RVEs by the cost (wall seconds) of their last solve, largest
    * first onto the least-loaded rank, and moves those whose rank changes,
-   * unless that lowers the most loaded rank's cost by 2 % or less.
+   * unless that lowers the most loaded rank's cost by 5 % or less.
    * @pre called right after commit(). @return number of RVEs moved.
    */
   int rebalance();

@@ -96,8 +96,16 @@ const ServoRve::Result& ServoRve::solve(const Mat2& F)
   return fix_->result();
 }
 
+RveResponse ServoRve::solve_increment(const Eigen::Matrix2d& d_eps)
+{
+  const Mat2 F_now = mode_ == HistoryMode::committed ? committed_F_ : fix_->result().F;
+  const Eigen::Matrix2d F_next = (Eigen::Matrix2d::Identity() + d_eps) * to_eigen(F_now);
+  return rve_to_macro(solve(macro_to_rve(F_next)));
+}
+
 void ServoRve::commit()
 {
+  committed_F_ = fix_->result().F;
   instance_->command("write_restart " + committed_file_);
   committed_bytes_ = std::filesystem::file_size(committed_file_);
   at_committed_state_ = true;

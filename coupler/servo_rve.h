@@ -75,6 +75,7 @@ public:
   const Result& solve(const Mat2& F);
   /// Rve interface: macro_to_rve, solve, rve_to_macro.
   RveResponse solve(const Eigen::Matrix2d& F) override { return rve_to_macro(solve(macro_to_rve(F))); }
+  RveResponse solve_increment(const Eigen::Matrix2d& d_eps) override;
   /// Accepts the current state as the converged load step.
   void commit() override;
   /// Returns exactly to the last committed state.
@@ -104,6 +105,7 @@ private:
   std::string committed_file_;
   std::size_t committed_bytes_ = 0;
   bool at_committed_state_ = false;
+  Mat2 committed_F_{1, 0, 0, 1}; ///< F of the committed state
   std::unique_ptr<LiggghtsInstance> instance_;
   LAMMPS_NS::FixRveServo* fix_ = nullptr;
   double last_seconds_ = 0.0;

@@ -110,6 +110,21 @@ void check_history(Checker& check)
   std::cout << "  load-unload difference " << d_modes << ", monotonic max difference " << worst
             << std::endl;
 }
+/// A strain increment in the RVE frame equals a solve at (I + d_eps) F.
+void check_increment(Checker& check)
+{
+  ServoRve a(setup()), b(setup());
+  const Eigen::Matrix2d sigma1 = to_eigen(a.solve(F1).sigma);
+  b.solve(F1);
+  Eigen::Matrix2d d_eps;
+  d_eps << -0.001, 0.0005, 0.0005, -0.002;
+  const RveResponse ra = a.solve_increment(d_eps);
+  const Eigen::Matrix2d F_next = (Eigen::Matrix2d::Identity() + d_eps) * to_eigen(F1);
+  const RveResponse rb = b.solve(F_next);
+  check.truth("solve_increment = solve((I + d_eps) F), bitwise",
+              ra.P == rb.P && ra.sigma == rb.sigma && ra.dem_steps == rb.dem_steps);
+  check.truth("the increment changed the stress", (ra.sigma - sigma1).norm() > 1e-3 * sigma1.norm());
+}
 } // namespace
 
 int main(int argc, char** argv)
@@ -129,6 +144,7 @@ int main(int argc, char** argv)
     if (c == "rollback") check_rollback(check);
     else if (c == "restore") check_restore(check);
     else if (c == "history") check_history(check);
+    else if (c == "increment") check_increment(check);
     else check.truth("known case", false, c);
   }
   catch (const std::exception& e)

@@ -1,0 +1,350 @@
+#include "explicit_solver.h"
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace fe2dem::macro
+{
+using namespace dealii;
+
+template <int dim>
+ExplicitSolver<dim>::ExplicitSolver(const Parameters& parameters)
+  : prm_(parameters), material_{parameters.material.shear_modulus, parameters.material.lame_lambda},
+    fe_(FE_Q<dim>(1), dim), pcout_(std::cout, true),
+    timer_(pcout_, TimerOutput::summary, TimerOutput::wall_times)
+{
+  std::istringstream s(prm_.loading.affine_F);
+  for (unsigned int i = 0; i < dim; ++i)
+    for (unsigned int j = 0; j < dim; ++j)
+      s >> affine_F_[i][j];
+}
+
+template <int dim>
+void ExplicitSolver<dim>::run()
+{
+  make_grid();
+  setup_system();
+  assemble_lumped_mass();
+  std::filesystem::create_directories(prm_.output_directory);
+  summary_.open(prm_.output_directory + "/summary.csv");
+  if (!summary_)
+    throw std::runtime_error("cannot write '" + prm_.output_directory +
+                             "/summary.csv': check 'Output directory'");
+  summary_ << "step,stage,time,axial_strain,stress_ratio_mean,stress_ratio_min,stress_ratio_max,"
+              "sigma11_mean,sigma22_mean,J_rel_mean,coordination_mean,anisotropy_mean,"
+              "macro_iterations,dem_steps,wall_s,top_force,affine_deviation\n"
+           << std::setprecision(12);
+  for (unsigned int step = 1; step <= prm_.loading.steps; ++step)
+  {
+    const unsigned int iterations = relax_load_step(step);
+    TimerOutput::Scope t(timer_, "output");
+    output_step(step, static_cast<double>(step) / prm_.loading.steps, iterations);
+  }
+}
+
+template <int dim>
+void ExplicitSolver<dim>::make_grid()
+{
+  const Geometry& g = prm_.geometry;
+  GridGenerator::subdivided_hyper_rectangle(triangulation_, {g.nx, g.ny}, Point<dim>(),
+                                            Point<dim>(g.width, g.height));
+  if (g.distortion > 0.0)
+    GridTools::distort_random(g.distortion, triangulation_, /*keep_boundary=*/true, /*seed=*/42);
+  h_min_ = GridTools::minimal_cell_diameter(triangulation_) / std::sqrt(double(dim));
+}
+
+template <int dim>
+void ExplicitSolver<dim>::setup_system()
+{
+  dof_handler_.reinit(triangulation_);
+  dof_handler_.distribute_dofs(fe_);
+  const unsigned int n = dof_handler_.n_dofs();
+  dof_position_.resize(n);
+  DoFTools::map_dofs_to_support_points(MappingQ1<dim>(), dof_handler_, dof_position_);
+  dof_component_.assign(n, 0);
+  std::vector<types::global_dof_index> dofs(fe_.dofs_per_cell);
+  for (const auto& cell : dof_handler_.active_cell_iterators())
+  {
+    cell->get_dof_indices(dofs);
+    for (unsigned int i = 0; i < fe_.dofs_per_cell; ++i)
+      dof_component_[dofs[i]] = fe_.system_to_component_index(i).first;
+  }
+  for (auto* v : {&mass_, &displacement_, &velocity_, &f_int_, &f_ext_})
+    v->reinit(n);
+  history_.resize(triangulation_.n_active_cells() * QGauss<dim>(2).size());
+}
+
+// (M5): row-sum-free diagonal scaling of the consistent mass.
+template <int dim>
+void ExplicitSolver<dim>::assemble_lumped_mass()
+{
+  const QGauss<dim> quadrature(2);
+  FEValues<dim> fe_values(fe_, quadrature, update_values | update_JxW_values);
+  std::vector<types::global_dof_index> dofs(fe_.dofs_per_cell);
+  for (const auto& cell : dof_handler_.active_cell_iterators())
+  {
+    fe_values.reinit(cell);
+    cell->get_dof_indices(dofs);
+    std::vector<double> nn(fe_.dofs_per_cell, 0.0);
+    double volume = 0.0;
+    for (unsigned int q = 0; q < quadrature.size(); ++q)
+    {
+      volume += fe_values.JxW(q);
+      for (unsigned int i = 0; i < fe_.dofs_per_cell; ++i)
+        nn[i] += std::pow(fe_values.shape_value(i, q), 2) * fe_values.JxW(q);
+    }
+    for (unsigned int i = 0; i < fe_.dofs_per_cell; ++i)
+    {
+      const unsigned int c = fe_.system_to_component_index(i).first;
+      double sum = 0.0;
+      for (unsigned int j = 0; j < fe_.dofs_per_cell; ++j)
+        if (fe_.system_to_component_index(j).first == c)
+          sum += nn[j];
+      mass_[dofs[i]] += nn[i] / sum * prm_.material.density * volume;
+    }
+  }
+}
+
+template <int dim>
+void ExplicitSolver<dim>::apply_boundary_values(double load_fraction)
+{
+  const Geometry& g = prm_.geometry;
+  const double tol = 1e-10 * std::max(g.width, g.height);
+  boundary_values_.clear();
+  Tensor<2, dim> F = unit_symmetric_tensor<dim>();
+  F += load_fraction * (affine_F_ - unit_symmetric_tensor<dim>());
+  for (types::global_dof_index i = 0; i < dof_position_.size(); ++i)
+  {
+    const Point<dim>& X = dof_position_[i];
+    const unsigned int c = dof_component_[i];
+    const bool left = X[0] < tol, right = X[0] > g.width - tol, bottom = X[1] < tol,
+               top = X[1] > g.height - tol;
+    if (prm_.loading.boundary == "affine")
+    {
+      if (left || right || bottom || top)
+        boundary_values_[i] = (F * X - X)[c];
+    }
+    else
+    {
+      if (bottom && c == 1)
+        boundary_values_[i] = 0.0;
+      if (bottom && left && c == 0)
+        boundary_values_[i] = 0.0;
+      if (top && c == 1)
+        boundary_values_[i] = -load_fraction * prm_.loading.axial_strain * g.height;
+    }
+  }
+  for (const auto& [i, value] : boundary_values_)
+  {
+    displacement_[i] = value;
+    velocity_[i] = 0.0;
+  }
+}
+
+template <int dim>
+void ExplicitSolver<dim>::assemble_internal_force()
+{
+  TimerOutput::Scope t(timer_, "assemble f_int");
+  const QGauss<dim> quadrature(2);
+  FEValues<dim> fe_values(fe_, quadrature, update_gradients | update_JxW_values);
+  const FEValuesExtractors::Vector u(0);
+  std::vector<Tensor<2, dim>> grad_u(quadrature.size());
+  std::vector<types::global_dof_index> dofs(fe_.dofs_per_cell);
+  f_int_ = 0.0;
+  unsigned int point = 0;
+  for (const auto& cell : dof_handler_.active_cell_iterators())
+  {
+    fe_values.reinit(cell);
+    cell->get_dof_indices(dofs);
+    fe_values[u].get_function_gradients(displacement_, grad_u);
+    for (unsigned int q = 0; q < quadrature.size(); ++q, ++point)
+    {
+      PointHistory& h = history_[point];
+      h.F = unit_symmetric_tensor<dim>() + grad_u[q];
+      if (!(determinant(h.F) > 0.0))
+        throw std::runtime_error("det F <= 0 at a quadrature point of cell " +
+                                 std::to_string(cell->active_cell_index()) +
+                                 ": the mesh inverted; use more load steps or a smaller "
+                                 "'Safety factor'");
+      h.P = material_.piola(h.F);
+      for (unsigned int i = 0; i < fe_.dofs_per_cell; ++i)
+        f_int_[dofs[i]] += scalar_product(h.P, fe_values[u].gradient(i, q)) * fe_values.JxW(q);
+    }
+  }
+}
+
+// Follower pressure on the left and right edges: -p n da on the current
+// edge, lumped half to each node (exact for straight Q1 edges).
+template <int dim>
+void ExplicitSolver<dim>::assemble_external_force(double load_fraction)
+{
+  f_ext_ = 0.0;
+  const double p = load_fraction * prm_.loading.lateral_pressure;
+  if (prm_.loading.boundary != "biaxial" || p == 0.0)
+    return;
+  const double tol = 1e-10 * prm_.geometry.width;
+  for (const auto& cell : dof_handler_.active_cell_iterators())
+    for (const unsigned int f : cell->face_indices())
+    {
+      const auto face = cell->face(f);
+      if (!face->at_boundary())
+        continue;
+      const double xc = face->center()[0];
+      const bool left = xc < tol, right = xc > prm_.geometry.width - tol;
+      if (!left && !right)
+        continue;
+      Point<dim> x[2];
+      for (unsigned int v = 0; v < 2; ++v)
+        for (unsigned int c = 0; c < dim; ++c)
+          x[v][c] = face->vertex(v)[c] + displacement_[face->vertex_dof_index(v, c)];
+      const Tensor<1, dim> d = x[1] - x[0];
+      Tensor<1, dim> n;
+      n[0] = d[1];
+      n[1] = -d[0];
+      if ((left && n[0] > 0.0) || (right && n[0] < 0.0))
+        n *= -1.0; // outward
+      for (unsigned int v = 0; v < 2; ++v)
+        for (unsigned int c = 0; c < dim; ++c)
+          f_ext_[face->vertex_dof_index(v, c)] -= 0.5 * p * n[c];
+    }
+}
+
+// (M3)-(M9): central differences with mass-proportional damping; damping
+// from the Rayleigh quotient (M6, M7); time step (M8) capped by the
+// stability limit 2/omega_max of the mesh (omega_max ~ 2 c sqrt(dim)/h),
+// because with physical lumped masses the Rayleigh quotient gives the
+// lowest, not the highest, frequency.
+template <int dim>
+unsigned int ExplicitSolver<dim>::relax_load_step(unsigned int step)
+{
+  const DynamicRelaxation& dr = prm_.relaxation;
+  const double frac = static_cast<double>(step) / prm_.loading.steps;
+  velocity_ = 0.0;
+  apply_boundary_values(frac);
+  const double omega_max = 2.0 * std::sqrt(double(dim)) * material_.wave_speed(prm_.material.density) / h_min_;
+  const double dt_stable = dr.safety_factor * 2.0 / omega_max;
+  double e_max = 0.0;
+  for (unsigned int it = 1; it <= dr.max_iterations; ++it)
+  {
+    assemble_internal_force();
+    assemble_external_force(frac);
+    double num = 0.0, den = 0.0;
+    for (types::global_dof_index i = 0; i < mass_.size(); ++i)
+      if (!boundary_values_.count(i))
+      {
+        num += displacement_[i] * f_int_[i];
+        den += mass_[i] * displacement_[i] * displacement_[i];
+      }
+    const double omega = (num > 0.0 && den > 0.0) ? std::sqrt(num / den) : omega_max; // guard of (M6)
+    const double xi = dr.damping_ratio, alpha = 2.0 * xi * omega;
+    const double dt = std::min(dt_stable, dr.safety_factor * 2.0 / omega * (std::sqrt(xi * xi + 1.0) - xi));
+    double e_kin = 0.0;
+    for (types::global_dof_index i = 0; i < mass_.size(); ++i)
+    {
+      if (boundary_values_.count(i))
+        continue;
+      velocity_[i] = ((2.0 - dt * alpha) * velocity_[i] + 2.0 * dt * (f_ext_[i] - f_int_[i]) / mass_[i]) /
+                     (2.0 + dt * alpha);
+      displacement_[i] += dt * velocity_[i];
+      e_kin += 0.5 * mass_[i] * velocity_[i] * velocity_[i];
+    }
+    e_max = std::max(e_max, e_kin);
+    if (it >= dr.min_iterations && (e_max == 0.0 || e_kin <= dr.kinetic_tolerance * e_max))
+    {
+      assemble_internal_force(); // P at the converged displacement
+      return it;
+    }
+  }
+  throw std::runtime_error("load step " + std::to_string(step) + ": dynamic relaxation did not "
+                           "converge within 'Max iterations' = " + std::to_string(dr.max_iterations));
+}
+
+template <int dim>
+void ExplicitSolver<dim>::output_step(unsigned int step, double frac, unsigned int iterations)
+{
+  static const double t0 = MPI_Wtime();
+  const unsigned int n_cells = triangulation_.n_active_cells();
+  const unsigned int per_cell = history_.size() / n_cells;
+  Vector<double> s11(n_cells), s22(n_cells), ratio(n_cells), j_rel(n_cells);
+  double r_min = 1e300, r_max = -1e300, r_sum = 0.0, s11_sum = 0.0, s22_sum = 0.0, j_sum = 0.0;
+  for (unsigned int p = 0; p < history_.size(); ++p)
+  {
+    const Tensor<2, dim>& F = history_[p].F;
+    const double J = determinant(F);
+    const Tensor<2, dim> sigma = history_[p].P * transpose(F) / J;
+    const double r = sigma[0][0] + sigma[1][1] != 0.0
+                       ? std::abs((sigma[0][0] - sigma[1][1]) / (sigma[0][0] + sigma[1][1]))
+                       : 0.0;
+    r_min = std::min(r_min, r);
+    r_max = std::max(r_max, r);
+    r_sum += r;
+    s11_sum += sigma[0][0];
+    s22_sum += sigma[1][1];
+    j_sum += J - 1.0;
+    s11[p / per_cell] += sigma[0][0] / per_cell;
+    s22[p / per_cell] += sigma[1][1] / per_cell;
+    ratio[p / per_cell] += r / per_cell;
+    j_rel[p / per_cell] += (J - 1.0) / per_cell;
+  }
+  const double n = history_.size();
+  // Reaction on the top edge and deviation from the affine field.
+  const double tol = 1e-10 * prm_.geometry.height;
+  double top_force = 0.0, dev = 0.0, scale = 0.0;
+  Tensor<2, dim> F = unit_symmetric_tensor<dim>();
+  F += frac * (affine_F_ - unit_symmetric_tensor<dim>());
+  for (types::global_dof_index i = 0; i < dof_position_.size(); ++i)
+  {
+    const Point<dim>& X = dof_position_[i];
+    if (X[1] > prm_.geometry.height - tol && dof_component_[i] == 1)
+      top_force += f_int_[i];
+    const double affine = (F * X - X)[dof_component_[i]];
+    dev = std::max(dev, std::abs(displacement_[i] - affine));
+    scale = std::max(scale, std::abs(affine));
+  }
+  const double axial = prm_.loading.boundary == "biaxial" ? frac * prm_.loading.axial_strain : 0.0;
+  summary_ << step << ",1," << frac << ',' << axial << ',' << r_sum / n << ',' << r_min << ','
+           << r_max << ',' << s11_sum / n << ',' << s22_sum / n << ',' << j_sum / n << ",0,0,"
+           << iterations << ",0," << MPI_Wtime() - t0 << ',' << top_force << ','
+           << (prm_.loading.boundary == "affine" && scale > 0.0 ? dev / scale : 0.0) << '\n';
+  summary_.flush();
+  pcout_ << "step " << step << "  load " << frac << "  DR iterations " << iterations
+         << "  sigma22_mean " << s22_sum / n << std::endl;
+
+  DataOut<dim> data_out;
+  data_out.attach_dof_handler(dof_handler_);
+  std::vector<DataComponentInterpretation::DataComponentInterpretation> vec(
+    dim, DataComponentInterpretation::component_is_part_of_vector);
+  data_out.add_data_vector(displacement_, std::vector<std::string>(dim, "displacement"),
+                           DataOut<dim>::type_dof_data, vec);
+  data_out.add_data_vector(s11, "sigma11");
+  data_out.add_data_vector(s22, "sigma22");
+  data_out.add_data_vector(ratio, "stress_ratio");
+  data_out.add_data_vector(j_rel, "J_rel");
+  data_out.build_patches();
+  std::ostringstream name;
+  name << "solution-" << std::setw(4) << std::setfill('0') << step << ".vtu";
+  std::ofstream vtu(prm_.output_directory + "/" + name.str());
+  data_out.write_vtu(vtu);
+  static std::vector<std::pair<double, std::string>> records;
+  records.emplace_back(frac, name.str());
+  std::ofstream pvd(prm_.output_directory + "/solution.pvd");
+  DataOutBase::write_pvd_record(pvd, records);
+}
+
+template class ExplicitSolver<2>;
+} // namespace fe2dem::macro

@@ -1,0 +1,146 @@
+#include "macro_parameters.h"
+
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+namespace fe2dem::macro
+{
+using dealii::Patterns::Anything;
+using dealii::Patterns::Double;
+using dealii::Patterns::Integer;
+using dealii::Patterns::Selection;
+
+void Geometry::declare_parameters(dealii::ParameterHandler& prm)
+{
+  prm.enter_subsection("Geometry");
+  prm.declare_entry("Width", "10", Double(0.0), "Specimen width (x), > 0 [length unit of the problem].");
+  prm.declare_entry("Height", "20", Double(0.0), "Specimen height (y), > 0.");
+  prm.declare_entry("Cells x", "1", Integer(1), "Q1 cells across the width.");
+  prm.declare_entry("Cells y", "1", Integer(1), "Q1 cells along the height.");
+  prm.declare_entry("Distortion", "0", Double(0.0, 0.4),
+                    "Random shift of interior nodes as a fraction of the cell size (patch tests).");
+  prm.leave_subsection();
+}
+
+void Geometry::parse_parameters(dealii::ParameterHandler& prm)
+{
+  prm.enter_subsection("Geometry");
+  width = prm.get_double("Width");
+  height = prm.get_double("Height");
+  nx = prm.get_integer("Cells x");
+  ny = prm.get_integer("Cells y");
+  distortion = prm.get_double("Distortion");
+  prm.leave_subsection();
+  if (!(width > 0.0 && height > 0.0))
+    throw std::runtime_error("subsection Geometry: 'Width' and 'Height' must be > 0");
+}
+
+void Material::declare_parameters(dealii::ParameterHandler& prm)
+{
+  prm.enter_subsection("Material");
+  prm.declare_entry("Type", "neo-Hookean", Selection("neo-Hookean"),
+                    "Constitutive response at the quadrature points: the built-in compressible "
+                    "neo-Hookean law P = mu (F - F^-T) + lambda ln(J) F^-T.");
+  prm.declare_entry("Shear modulus", "1e6", Double(0.0), "mu, > 0 [force/area; 2D: force/length].");
+  prm.declare_entry("Lame lambda", "1e6", Double(0.0), "lambda, >= 0.");
+  prm.declare_entry("Density", "1", Double(0.0),
+                    "Mass density of the lumped mass matrix (M5), > 0; in dynamic relaxation it "
+                    "only scales the pseudo-time.");
+  prm.leave_subsection();
+}
+
+void Material::parse_parameters(dealii::ParameterHandler& prm)
+{
+  prm.enter_subsection("Material");
+  type = prm.get("Type");
+  shear_modulus = prm.get_double("Shear modulus");
+  lame_lambda = prm.get_double("Lame lambda");
+  density = prm.get_double("Density");
+  prm.leave_subsection();
+  if (!(shear_modulus > 0.0 && density > 0.0))
+    throw std::runtime_error("subsection Material: 'Shear modulus' and 'Density' must be > 0");
+}
+
+void DynamicRelaxation::declare_parameters(dealii::ParameterHandler& prm)
+{
+  prm.enter_subsection("Dynamic relaxation");
+  prm.declare_entry("Damping ratio", "1.0", Double(0.0), "xi of (M7)/(M8).");
+  prm.declare_entry("Safety factor", "0.5", Double(0.0, 1.0), "gamma of (M8), < 1.");
+  prm.declare_entry("Kinetic energy tolerance", "1e-3", Double(0.0),
+                    "tol of (M9): a load step has converged when E_kin <= tol * max E_kin of "
+                    "the step (after the peak).");
+  prm.declare_entry("Max iterations", "100000", Integer(1), "Iteration budget of one load step.");
+  prm.declare_entry("Min iterations", "10", Integer(1), "Iterations before (M9) is tested.");
+  prm.leave_subsection();
+}
+
+void DynamicRelaxation::parse_parameters(dealii::ParameterHandler& prm)
+{
+  prm.enter_subsection("Dynamic relaxation");
+  damping_ratio = prm.get_double("Damping ratio");
+  safety_factor = prm.get_double("Safety factor");
+  kinetic_tolerance = prm.get_double("Kinetic energy tolerance");
+  max_iterations = prm.get_integer("Max iterations");
+  min_iterations = prm.get_integer("Min iterations");
+  prm.leave_subsection();
+  if (!(safety_factor > 0.0 && kinetic_tolerance > 0.0))
+    throw std::runtime_error("subsection Dynamic relaxation: 'Safety factor' and 'Kinetic "
+                             "energy tolerance' must be > 0");
+}
+
+void Loading::declare_parameters(dealii::ParameterHandler& prm)
+{
+  prm.enter_subsection("Loading");
+  prm.declare_entry("Boundary", "biaxial", Selection("biaxial|affine"),
+                    "biaxial: bottom edge fixed vertically, bottom-left node fixed, top edge "
+                    "pushed down to 'Axial strain', 'Lateral pressure' normal to the current "
+                    "left and right edges. affine: every boundary node at (F - I) X (patch test).");
+  prm.declare_entry("Axial strain", "0.01", Double(-0.5, 0.5),
+                    "biaxial: final compressive strain of the top edge (positive = compression).");
+  prm.declare_entry("Lateral pressure", "0", Double(0.0),
+                    "biaxial: follower pressure on the left and right edges [force/length].");
+  prm.declare_entry("Affine F", "1 0 0 1", Anything(), "affine: F11 F12 F21 F22 at the last step.");
+  prm.declare_entry("Load steps", "5", Integer(1), "Load steps (linear ramp of the loading).");
+  prm.leave_subsection();
+}
+
+void Loading::parse_parameters(dealii::ParameterHandler& prm)
+{
+  prm.enter_subsection("Loading");
+  boundary = prm.get("Boundary");
+  axial_strain = prm.get_double("Axial strain");
+  lateral_pressure = prm.get_double("Lateral pressure");
+  affine_F = prm.get("Affine F");
+  steps = prm.get_integer("Load steps");
+  prm.leave_subsection();
+  std::istringstream s(affine_F);
+  double f[4];
+  std::string extra;
+  if (!(s >> f[0] >> f[1] >> f[2] >> f[3]) || (s >> extra) || !(f[0] * f[3] - f[1] * f[2] > 0.0))
+    throw std::runtime_error("subsection Loading: 'Affine F' = '" + affine_F +
+                             "' must be four numbers F11 F12 F21 F22 with det F > 0");
+}
+
+void Parameters::declare_parameters(dealii::ParameterHandler& prm)
+{
+  prm.declare_entry("Output directory", "output", Anything(),
+                    "Directory for summary.csv and solution-*.vtu (relative to the parameter file).");
+  Geometry::declare_parameters(prm);
+  Material::declare_parameters(prm);
+  DynamicRelaxation::declare_parameters(prm);
+  Loading::declare_parameters(prm);
+}
+
+void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
+{
+  prm.parse_input(file);
+  const auto base = std::filesystem::path(file).parent_path();
+  const std::string out = prm.get("Output directory");
+  output_directory = std::filesystem::path(out).is_absolute() ? out : (base / out).lexically_normal().string();
+  geometry.parse_parameters(prm);
+  material.parse_parameters(prm);
+  relaxation.parse_parameters(prm);
+  loading.parse_parameters(prm);
+}
+} // namespace fe2dem::macro

@@ -1,0 +1,65 @@
+/**
+ * @file macro_parameters.h
+ * Parameters of `fe2dem FILE.prm`, one struct per subsection in the deal.II
+ * tutorial style (step-44): declare_parameters() documents every entry with
+ * a pattern, parse_parameters() reads and checks it.
+ */
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace fe2dem::macro
+{
+/// subsection Geometry: a subdivided rectangle [0, width] x [0, height].
+struct Geometry
+{
+  double width, height;
+  unsigned int nx, ny;
+  double distortion; ///< random interior node shift / cell size (patch tests)
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm);
+};
+
+/// subsection Material: the built-in compressible neo-Hookean law.
+struct Material
+{
+  std::string type; ///< neo-Hookean (RVE coupling: not yet)
+  double shear_modulus, lame_lambda, density;
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm);
+};
+
+/// subsection Dynamic relaxation: physics.md (M3)-(M9).
+struct DynamicRelaxation
+{
+  double damping_ratio, safety_factor, kinetic_tolerance;
+  unsigned int max_iterations, min_iterations;
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm);
+};
+
+/// subsection Loading: boundary conditions and load steps.
+struct Loading
+{
+  std::string boundary;       ///< biaxial | affine
+  double axial_strain;        ///< biaxial: final compressive strain of the top edge
+  double lateral_pressure;    ///< biaxial: follower pressure on left and right edges
+  std::string affine_F;       ///< affine: "F11 F12 F21 F22" on all boundary nodes
+  unsigned int steps;
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm);
+};
+
+struct Parameters
+{
+  std::string output_directory;
+  Geometry geometry;
+  Material material;
+  DynamicRelaxation relaxation;
+  Loading loading;
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse(dealii::ParameterHandler& prm, const std::string& file);
+};
+} // namespace fe2dem::macro

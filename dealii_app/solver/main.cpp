@@ -1,0 +1,52 @@
+// fe2dem FILE.prm: the macro problem of a parameter file.
+#include "explicit_solver.h"
+#include "macro_parameters.h"
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <mpi.h>
+
+#include <cstring>
+#include <iostream>
+
+int main(int argc, char** argv)
+{
+  MPI_Init(&argc, &argv);
+  int status = 0;
+  try
+  {
+    using namespace fe2dem::macro;
+    dealii::ParameterHandler prm;
+    Parameters::declare_parameters(prm);
+    if (argc != 2 || std::strcmp(argv[1], "--help") == 0)
+    {
+      std::cout << "Usage: fe2dem FILE.prm            run the macro problem of FILE.prm\n"
+                   "       fe2dem --print-parameters  every parameter, default and doc\n"
+                   "Status: built-in neo-Hookean material; RVE coupling comes next (issue 4).\n";
+      status = argc == 2 ? 0 : 2;
+    }
+    else if (std::strcmp(argv[1], "--print-parameters") == 0)
+      prm.print_parameters(std::cout, dealii::ParameterHandler::Text);
+    else
+    {
+      Parameters parameters;
+      parameters.parse(prm, argv[1]);
+      ExplicitSolver<2> solver(parameters);
+      solver.run();
+    }
+  }
+  catch (const dealii::ExceptionBase& e)
+  {
+    std::cerr << "\nfe2dem: error in the parameter file:\n";
+    e.print_info(std::cerr);
+    status = 1;
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "\nfe2dem: error: " << e.what() << std::endl;
+    status = 1;
+  }
+  MPI_Finalize();
+  return status;
+}

@@ -22,10 +22,12 @@ if mode == "patch":
             failures.append(f"step {r['step']}: affine deviation {r['affine_deviation']} > {tol}")
 else:
     mu, lam, strain, steps, max_it = map(float, sys.argv[3:8])
+    if abs(float(rows[-1]["axial_strain"]) - strain) > 1e-12:
+        failures.append(f"final axial strain {rows[-1]['axial_strain']}, expected {strain}")
     if len(rows) != int(steps):
         failures.append(f"{len(rows)} rows, expected {int(steps)}")
     for r in rows:
-        l2 = 1.0 - strain * float(r["time"])
+        l2 = 1.0 - float(r["axial_strain"])  # measured from the top edge
         l1 = 1.0
         for _ in range(60):  # Newton on P11(l1) = 0
             g = mu * (l1 - 1 / l1) + lam * math.log(l1 * l2) / l1

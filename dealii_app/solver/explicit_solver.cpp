@@ -1,5 +1,6 @@
 #include "explicit_solver.h"
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
@@ -25,9 +26,10 @@ using namespace dealii;
 template <int dim>
 ExplicitSolver<dim>::ExplicitSolver(const Parameters& parameters)
   : prm_(parameters), material_{parameters.material.shear_modulus, parameters.material.lame_lambda},
-    fe_(FE_Q<dim>(1), dim), pcout_(std::cout, true),
+    fe_(FE_Q<dim>(1), dim), pcout_(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0),
     timer_(pcout_, TimerOutput::summary, TimerOutput::wall_times)
 {
+  rank_ = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
   std::istringstream s(prm_.loading.affine_F);
   for (unsigned int i = 0; i < dim; ++i)
     for (unsigned int j = 0; j < dim; ++j)
@@ -40,21 +42,78 @@ void ExplicitSolver<dim>::run()
   make_grid();
   setup_system();
   assemble_lumped_mass();
-  std::filesystem::create_directories(prm_.output_directory);
-  summary_.open(prm_.output_directory + "/summary.csv");
-  if (!summary_)
-    throw std::runtime_error("cannot write '" + prm_.output_directory +
-                             "/summary.csv': check 'Output directory'");
-  summary_ << "step,stage,time,axial_strain,stress_ratio_mean,stress_ratio_min,stress_ratio_max,"
-              "sigma11_mean,sigma22_mean,J_rel_mean,coordination_mean,anisotropy_mean,"
-              "macro_iterations,dem_steps,wall_s,top_force,affine_deviation\n"
-           << std::setprecision(12);
-  for (unsigned int step = 1; step <= prm_.loading.steps; ++step)
+  if (prm_.material.type == "RVE")
+    make_rve_pool();
+  if (rank_ == 0)
   {
-    const unsigned int iterations = relax_load_step(step);
-    TimerOutput::Scope t(timer_, "output");
-    output_step(step, static_cast<double>(step) / prm_.loading.steps, iterations);
+    std::filesystem::create_directories(prm_.output_directory);
+    summary_.open(prm_.output_directory + "/summary.csv");
+    if (!summary_)
+      throw std::runtime_error("cannot write '" + prm_.output_directory +
+                               "/summary.csv': check 'Output directory'");
+    summary_ << "step,stage,time,axial_strain,stress_ratio_mean,stress_ratio_min,stress_ratio_max,"
+                "sigma11_mean,sigma22_mean,J_rel_mean,coordination_mean,anisotropy_mean,"
+                "macro_iterations,dem_steps,wall_s,top_force,affine_deviation\n"
+             << std::setprecision(12);
   }
+  h_ic_ = prm_.geometry.height;
+  const bool biaxial = prm_.loading.boundary == "biaxial";
+  const unsigned int n_iso = biaxial ? prm_.loading.isotropic_steps : 0;
+  for (stage_ = n_iso > 0 ? 1 : 2; stage_ <= 2; ++stage_)
+  {
+    const unsigned int n = stage_ == 1 ? n_iso : prm_.loading.steps;
+    for (step_in_stage_ = 1; step_in_stage_ <= n; ++step_in_stage_)
+    {
+      ++step_;
+      const unsigned int iterations = relax_load_step();
+      if (pool_)
+        pool_->commit();
+      TimerOutput::Scope t(timer_, "output");
+      output_step(iterations);
+    }
+    if (stage_ == 1)
+      finish_isotropic_stage();
+  }
+}
+
+template <int dim>
+double ExplicitSolver<dim>::stage_fraction() const
+{
+  const unsigned int n = stage_ == 1 ? prm_.loading.isotropic_steps : prm_.loading.steps;
+  return static_cast<double>(step_in_stage_) / n;
+}
+
+template <int dim>
+void ExplicitSolver<dim>::make_rve_pool()
+{
+  std::vector<fe2dem::QuadraturePoint> points;
+  for (std::size_t p = 0; p < history_.size(); ++p)
+    points.push_back({static_cast<long>(p), history_[p].position[0], history_[p].position[1], 1.0});
+  const fe2dem::HistoryMode mode = prm_.material.history == "committed"
+                                     ? fe2dem::HistoryMode::committed
+                                     : fe2dem::HistoryMode::continuous;
+  pcout_ << "creating " << points.size() << " RVEs on "
+         << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) << " rank(s)" << std::endl;
+  pool_ = std::make_unique<fe2dem::RvePool>(MPI_COMM_WORLD, prm_.rve.setup("none"), mode, points);
+}
+
+// End of stage 1: the height and J against which stage 2 is measured.
+template <int dim>
+void ExplicitSolver<dim>::finish_isotropic_stage()
+{
+  const double tol = 1e-10 * prm_.geometry.height;
+  double sum = 0.0;
+  int n = 0;
+  for (types::global_dof_index i = 0; i < dof_position_.size(); ++i)
+    if (dof_position_[i][1] > prm_.geometry.height - tol && dof_component_[i] == 1)
+    {
+      sum += displacement_[i];
+      ++n;
+    }
+  u_top_ic_ = sum / n;
+  h_ic_ = prm_.geometry.height + u_top_ic_;
+  for (PointHistory& h : history_)
+    h.J_ic = determinant(h.F);
 }
 
 template <int dim>
@@ -86,7 +145,16 @@ void ExplicitSolver<dim>::setup_system()
   }
   for (auto* v : {&mass_, &displacement_, &velocity_, &f_int_, &f_ext_})
     v->reinit(n);
-  history_.resize(triangulation_.n_active_cells() * QGauss<dim>(2).size());
+  const QGauss<dim> quadrature(2);
+  history_.resize(triangulation_.n_active_cells() * quadrature.size());
+  FEValues<dim> fe_values(fe_, quadrature, update_quadrature_points);
+  unsigned int point = 0;
+  for (const auto& cell : dof_handler_.active_cell_iterators())
+  {
+    fe_values.reinit(cell);
+    for (unsigned int q = 0; q < quadrature.size(); ++q)
+      history_[point++].position = fe_values.quadrature_point(q);
+  }
 }
 
 // (M5): row-sum-free diagonal scaling of the consistent mass.
@@ -121,13 +189,13 @@ void ExplicitSolver<dim>::assemble_lumped_mass()
 }
 
 template <int dim>
-void ExplicitSolver<dim>::apply_boundary_values(double load_fraction)
+void ExplicitSolver<dim>::apply_boundary_values()
 {
   const Geometry& g = prm_.geometry;
-  const double tol = 1e-10 * std::max(g.width, g.height);
+  const double tol = 1e-10 * std::max(g.width, g.height), frac = stage_fraction();
   boundary_values_.clear();
   Tensor<2, dim> F = unit_symmetric_tensor<dim>();
-  F += load_fraction * (affine_F_ - unit_symmetric_tensor<dim>());
+  F += frac * (affine_F_ - unit_symmetric_tensor<dim>());
   for (types::global_dof_index i = 0; i < dof_position_.size(); ++i)
   {
     const Point<dim>& X = dof_position_[i];
@@ -145,8 +213,8 @@ void ExplicitSolver<dim>::apply_boundary_values(double load_fraction)
         boundary_values_[i] = 0.0;
       if (bottom && left && c == 0)
         boundary_values_[i] = 0.0;
-      if (top && c == 1)
-        boundary_values_[i] = -load_fraction * prm_.loading.axial_strain * g.height;
+      if (stage_ == 2 && top && c == 1) // displacement control from the height h_ic
+        boundary_values_[i] = u_top_ic_ - frac * prm_.loading.axial_strain * h_ic_;
     }
   }
   for (const auto& [i, value] : boundary_values_)
@@ -156,14 +224,62 @@ void ExplicitSolver<dim>::apply_boundary_values(double load_fraction)
   }
 }
 
+// F at every quadrature point, then P from the material: the analytic law
+// or the RVE pool (macro_to_rve / rve_to_macro, all points at once).
+template <int dim>
+void ExplicitSolver<dim>::update_stresses()
+{
+  const QGauss<dim> quadrature(2);
+  FEValues<dim> fe_values(fe_, quadrature, update_gradients);
+  const FEValuesExtractors::Vector u(0);
+  std::vector<Tensor<2, dim>> grad_u(quadrature.size());
+  unsigned int point = 0;
+  for (const auto& cell : dof_handler_.active_cell_iterators())
+  {
+    fe_values.reinit(cell);
+    fe_values[u].get_function_gradients(displacement_, grad_u);
+    for (unsigned int q = 0; q < quadrature.size(); ++q, ++point)
+    {
+      history_[point].F = unit_symmetric_tensor<dim>() + grad_u[q];
+      if (!(determinant(history_[point].F) > 0.0))
+        throw std::runtime_error("det F <= 0 at a quadrature point of cell " +
+                                 std::to_string(cell->active_cell_index()) +
+                                 ": the mesh inverted; use more load steps or a smaller "
+                                 "'Safety factor'");
+    }
+  }
+  if (!pool_)
+  {
+    for (PointHistory& h : history_)
+      h.P = material_.piola(h.F);
+    return;
+  }
+  TimerOutput::Scope t(timer_, "RVE solves");
+  std::vector<Eigen::Matrix2d> F(history_.size());
+  for (std::size_t p = 0; p < history_.size(); ++p)
+    F[p] << history_[p].F[0][0], history_[p].F[0][1], history_[p].F[1][0], history_[p].F[1][1];
+  const std::vector<fe2dem::RveResponse> r = pool_->solve(F);
+  for (std::size_t p = 0; p < history_.size(); ++p)
+  {
+    PointHistory& h = history_[p];
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        h.P[i][j] = r[p].P(i, j);
+    h.coordination = r[p].coordination;
+    h.anisotropy = r[p].anisotropy;
+    h.dem_steps = r[p].dem_steps;
+    dem_steps_in_step_ += r[p].dem_steps;
+  }
+}
+
 template <int dim>
 void ExplicitSolver<dim>::assemble_internal_force()
 {
+  update_stresses();
   TimerOutput::Scope t(timer_, "assemble f_int");
   const QGauss<dim> quadrature(2);
   FEValues<dim> fe_values(fe_, quadrature, update_gradients | update_JxW_values);
   const FEValuesExtractors::Vector u(0);
-  std::vector<Tensor<2, dim>> grad_u(quadrature.size());
   std::vector<types::global_dof_index> dofs(fe_.dofs_per_cell);
   f_int_ = 0.0;
   unsigned int point = 0;
@@ -171,42 +287,33 @@ void ExplicitSolver<dim>::assemble_internal_force()
   {
     fe_values.reinit(cell);
     cell->get_dof_indices(dofs);
-    fe_values[u].get_function_gradients(displacement_, grad_u);
     for (unsigned int q = 0; q < quadrature.size(); ++q, ++point)
-    {
-      PointHistory& h = history_[point];
-      h.F = unit_symmetric_tensor<dim>() + grad_u[q];
-      if (!(determinant(h.F) > 0.0))
-        throw std::runtime_error("det F <= 0 at a quadrature point of cell " +
-                                 std::to_string(cell->active_cell_index()) +
-                                 ": the mesh inverted; use more load steps or a smaller "
-                                 "'Safety factor'");
-      h.P = material_.piola(h.F);
       for (unsigned int i = 0; i < fe_.dofs_per_cell; ++i)
-        f_int_[dofs[i]] += scalar_product(h.P, fe_values[u].gradient(i, q)) * fe_values.JxW(q);
-    }
+        f_int_[dofs[i]] +=
+          scalar_product(history_[point].P, fe_values[u].gradient(i, q)) * fe_values.JxW(q);
   }
 }
 
 // Follower pressure on the left and right edges: -p n da on the current
 // edge, lumped half to each node (exact for straight Q1 edges).
 template <int dim>
-void ExplicitSolver<dim>::assemble_external_force(double load_fraction)
+void ExplicitSolver<dim>::assemble_external_force()
 {
   f_ext_ = 0.0;
-  const double p = load_fraction * prm_.loading.lateral_pressure;
+  const double p = (stage_ == 1 ? stage_fraction() : 1.0) * prm_.loading.pressure;
   if (prm_.loading.boundary != "biaxial" || p == 0.0)
     return;
-  const double tol = 1e-10 * prm_.geometry.width;
+  const double tol = 1e-10 * std::max(prm_.geometry.width, prm_.geometry.height);
   for (const auto& cell : dof_handler_.active_cell_iterators())
     for (const unsigned int f : cell->face_indices())
     {
       const auto face = cell->face(f);
       if (!face->at_boundary())
         continue;
-      const double xc = face->center()[0];
-      const bool left = xc < tol, right = xc > prm_.geometry.width - tol;
-      if (!left && !right)
+      const double xc = face->center()[0], yc = face->center()[1];
+      const bool left = xc < tol, right = xc > prm_.geometry.width - tol,
+                 top = stage_ == 1 && yc > prm_.geometry.height - tol; // top loaded in stage 1
+      if (!left && !right && !top)
         continue;
       Point<dim> x[2];
       for (unsigned int v = 0; v < 2; ++v)
@@ -216,7 +323,7 @@ void ExplicitSolver<dim>::assemble_external_force(double load_fraction)
       Tensor<1, dim> n;
       n[0] = d[1];
       n[1] = -d[0];
-      if ((left && n[0] > 0.0) || (right && n[0] < 0.0))
+      if ((left && n[0] > 0.0) || (right && n[0] < 0.0) || (top && n[1] < 0.0))
         n *= -1.0; // outward
       for (unsigned int v = 0; v < 2; ++v)
         for (unsigned int c = 0; c < dim; ++c)
@@ -230,19 +337,21 @@ void ExplicitSolver<dim>::assemble_external_force(double load_fraction)
 // because with physical lumped masses the Rayleigh quotient gives the
 // lowest, not the highest, frequency.
 template <int dim>
-unsigned int ExplicitSolver<dim>::relax_load_step(unsigned int step)
+unsigned int ExplicitSolver<dim>::relax_load_step()
 {
   const DynamicRelaxation& dr = prm_.relaxation;
-  const double frac = static_cast<double>(step) / prm_.loading.steps;
   velocity_ = 0.0;
-  apply_boundary_values(frac);
-  const double omega_max = 2.0 * std::sqrt(double(dim)) * material_.wave_speed(prm_.material.density) / h_min_;
+  dem_steps_in_step_ = 0;
+  apply_boundary_values();
+  const double wave_speed = pool_ ? std::sqrt(prm_.material.stability_modulus / prm_.material.density)
+                                  : material_.wave_speed(prm_.material.density);
+  const double omega_max = 2.0 * std::sqrt(double(dim)) * wave_speed / h_min_;
   const double dt_stable = dr.safety_factor * 2.0 / omega_max;
   double e_max = 0.0;
   for (unsigned int it = 1; it <= dr.max_iterations; ++it)
   {
     assemble_internal_force();
-    assemble_external_force(frac);
+    assemble_external_force();
     double num = 0.0, den = 0.0;
     for (types::global_dof_index i = 0; i < mass_.size(); ++i)
       if (!boundary_values_.count(i))
@@ -266,22 +375,26 @@ unsigned int ExplicitSolver<dim>::relax_load_step(unsigned int step)
     e_max = std::max(e_max, e_kin);
     if (it >= dr.min_iterations && (e_max == 0.0 || e_kin <= dr.kinetic_tolerance * e_max))
     {
-      assemble_internal_force(); // P at the converged displacement
+      // P at the converged displacement. (With committed RVE history this is
+      // one more trial solve from the committed state, at the final U.)
+      assemble_internal_force();
       return it;
     }
   }
-  throw std::runtime_error("load step " + std::to_string(step) + ": dynamic relaxation did not "
+  throw std::runtime_error("load step " + std::to_string(step_) + ": dynamic relaxation did not "
                            "converge within 'Max iterations' = " + std::to_string(dr.max_iterations));
 }
 
 template <int dim>
-void ExplicitSolver<dim>::output_step(unsigned int step, double frac, unsigned int iterations)
+void ExplicitSolver<dim>::output_step(unsigned int iterations)
 {
+  const double frac = stage_fraction();
   static const double t0 = MPI_Wtime();
   const unsigned int n_cells = triangulation_.n_active_cells();
   const unsigned int per_cell = history_.size() / n_cells;
   Vector<double> s11(n_cells), s22(n_cells), ratio(n_cells), j_rel(n_cells);
   double r_min = 1e300, r_max = -1e300, r_sum = 0.0, s11_sum = 0.0, s22_sum = 0.0, j_sum = 0.0;
+  double coord_sum = 0.0, aniso_sum = 0.0;
   for (unsigned int p = 0; p < history_.size(); ++p)
   {
     const Tensor<2, dim>& F = history_[p].F;
@@ -295,11 +408,14 @@ void ExplicitSolver<dim>::output_step(unsigned int step, double frac, unsigned i
     r_sum += r;
     s11_sum += sigma[0][0];
     s22_sum += sigma[1][1];
-    j_sum += J - 1.0;
+    const double jr = (J - history_[p].J_ic) / history_[p].J_ic;
+    j_sum += jr;
+    coord_sum += history_[p].coordination;
+    aniso_sum += history_[p].anisotropy;
     s11[p / per_cell] += sigma[0][0] / per_cell;
     s22[p / per_cell] += sigma[1][1] / per_cell;
     ratio[p / per_cell] += r / per_cell;
-    j_rel[p / per_cell] += (J - 1.0) / per_cell;
+    j_rel[p / per_cell] += jr / per_cell;
   }
   const double n = history_.size();
   // Reaction on the top edge and deviation from the affine field.
@@ -316,14 +432,29 @@ void ExplicitSolver<dim>::output_step(unsigned int step, double frac, unsigned i
     dev = std::max(dev, std::abs(displacement_[i] - affine));
     scale = std::max(scale, std::abs(affine));
   }
-  const double axial = prm_.loading.boundary == "biaxial" ? frac * prm_.loading.axial_strain : 0.0;
-  summary_ << step << ",1," << frac << ',' << axial << ',' << r_sum / n << ',' << r_min << ','
-           << r_max << ',' << s11_sum / n << ',' << s22_sum / n << ',' << j_sum / n << ",0,0,"
-           << iterations << ",0," << MPI_Wtime() - t0 << ',' << top_force << ','
-           << (prm_.loading.boundary == "affine" && scale > 0.0 ? dev / scale : 0.0) << '\n';
+  double u_top = 0.0;
+  int n_top = 0;
+  for (types::global_dof_index i = 0; i < dof_position_.size(); ++i)
+    if (dof_position_[i][1] > prm_.geometry.height - tol && dof_component_[i] == 1)
+    {
+      u_top += displacement_[i];
+      ++n_top;
+    }
+  const double axial = stage_ == 2 ? (u_top_ic_ - u_top / n_top) / h_ic_ : 0.0;
+  if (rank_ != 0)
+    return;
+  summary_ << step_ << ',' << stage_ << ',' << step_ - 1 + frac << ',' << axial << ','
+           << r_sum / n << ',' << r_min << ',' << r_max << ',' << s11_sum / n << ','
+           << s22_sum / n << ',' << j_sum / n << ',' << coord_sum / n << ',' << aniso_sum / n
+           << ',' << iterations << ',' << dem_steps_in_step_ << ',' << MPI_Wtime() - t0 << ','
+           << top_force << ',' << (prm_.loading.boundary == "affine" && scale > 0.0 ? dev / scale : 0.0)
+           << '\n';
   summary_.flush();
-  pcout_ << "step " << step << "  load " << frac << "  DR iterations " << iterations
-         << "  sigma22_mean " << s22_sum / n << std::endl;
+  pcout_ << "stage " << stage_ << " step " << std::setw(3) << step_ << "  axial strain "
+         << std::setw(9) << axial << "  stress ratio " << std::setw(9) << r_sum / n
+         << "  DR iterations " << std::setw(6) << iterations << "  DEM steps " << dem_steps_in_step_
+         << "  wall " << std::setprecision(4) << MPI_Wtime() - t0 << " s" << std::setprecision(6)
+         << std::endl;
 
   DataOut<dim> data_out;
   data_out.attach_dof_handler(dof_handler_);
@@ -337,11 +468,11 @@ void ExplicitSolver<dim>::output_step(unsigned int step, double frac, unsigned i
   data_out.add_data_vector(j_rel, "J_rel");
   data_out.build_patches();
   std::ostringstream name;
-  name << "solution-" << std::setw(4) << std::setfill('0') << step << ".vtu";
+  name << "solution-" << std::setw(4) << std::setfill('0') << step_ << ".vtu";
   std::ofstream vtu(prm_.output_directory + "/" + name.str());
   data_out.write_vtu(vtu);
   static std::vector<std::pair<double, std::string>> records;
-  records.emplace_back(frac, name.str());
+  records.emplace_back(step_, name.str());
   std::ofstream pvd(prm_.output_directory + "/solution.pvd");
   DataOutBase::write_pvd_record(pvd, records);
 }

@@ -4,13 +4,16 @@
  * Gauss points, lumped mass (M5) and dynamic relaxation (M3)-(M9) per load
  * step, in the style of the deal.II tutorials (step-18, step-44).
  *
- * Status: the built-in neo-Hookean material only; the RVE coupling through
- * fe2dem::RvePool, history.h5 and MPI come next (issue 4).
+ * The constitutive response comes from the built-in neo-Hookean law or from
+ * one RVE per quadrature point (fe2dem::RvePool). Under MPI every rank runs
+ * the same (small) macro problem and the pool spreads the RVEs over the
+ * ranks, so results do not depend on the number of ranks; output on rank 0.
  */
 #pragma once
 
 #include "macro_parameters.h"
 #include "neo_hookean.h"
+#include "rve_pool.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -37,16 +40,30 @@ private:
   struct PointHistory
   {
     dealii::Tensor<2, dim> F, P;
+    dealii::Point<dim> position;
+    double J_ic = 1.0;            ///< det F after the isotropic stage
+    double coordination = 0.0, anisotropy = 0.0;
+    long dem_steps = 0;           ///< DEM steps of the last RVE solve
   };
 
   void make_grid();
   void setup_system();
   void assemble_lumped_mass();
-  void apply_boundary_values(double load_fraction);
+  void make_rve_pool();
+  void apply_boundary_values();
+  void update_stresses();
   void assemble_internal_force();
-  void assemble_external_force(double load_fraction);
-  unsigned int relax_load_step(unsigned int step);
-  void output_step(unsigned int step, double load_fraction, unsigned int iterations);
+  void assemble_external_force();
+  unsigned int relax_load_step();
+  void finish_isotropic_stage();
+  void output_step(unsigned int iterations);
+
+  /// Where the loading is: stage 1 (isotropic) or 2 (axial), step in stage.
+  unsigned int stage_ = 1, step_in_stage_ = 0, step_ = 0;
+  double stage_fraction() const;
+  double u_top_ic_ = 0.0, h_ic_ = 0.0; ///< top displacement and height after stage 1
+  long dem_steps_in_step_ = 0;
+  std::unique_ptr<fe2dem::RvePool> pool_;
 
   const Parameters& prm_;
   NeoHookean<dim> material_;
@@ -60,6 +77,7 @@ private:
   std::vector<PointHistory> history_; ///< cell-major, 2x2 points per cell
   dealii::Tensor<2, dim> affine_F_;
   double h_min_ = 0.0;
+  int rank_ = 0;
   dealii::ConditionalOStream pcout_;
   dealii::TimerOutput timer_;
   std::ofstream summary_;

@@ -39,14 +39,22 @@ void Geometry::parse_parameters(dealii::ParameterHandler& prm)
 void Material::declare_parameters(dealii::ParameterHandler& prm)
 {
   prm.enter_subsection("Material");
-  prm.declare_entry("Type", "neo-Hookean", Selection("neo-Hookean"),
+  prm.declare_entry("Type", "neo-Hookean", Selection("neo-Hookean|RVE"),
                     "Constitutive response at the quadrature points: the built-in compressible "
-                    "neo-Hookean law P = mu (F - F^-T) + lambda ln(J) F^-T.");
+                    "neo-Hookean law P = mu (F - F^-T) + lambda ln(J) F^-T, or one RVE per "
+                    "point (subsection RVE).");
+  prm.declare_entry("Stability modulus", "2e7", Double(0.0),
+                    "RVE: an upper estimate of the tangent modulus [force/length in 2D], used "
+                    "only for the stable dynamic-relaxation step.");
+  prm.declare_entry("History", "continuous", Selection("committed|continuous"),
+                    "RVE: every trial solve starts from the last converged load step "
+                    "(committed, [LBS]) or continues from the previous iteration (continuous).");
   prm.declare_entry("Shear modulus", "1e6", Double(0.0), "mu, > 0 [force/area; 2D: force/length].");
   prm.declare_entry("Lame lambda", "1e6", Double(0.0), "lambda, >= 0.");
   prm.declare_entry("Density", "1", Double(0.0),
-                    "Mass density of the lumped mass matrix (M5), > 0; in dynamic relaxation it "
-                    "only scales the pseudo-time.");
+                    "Mass density of the lumped mass matrix (M5), > 0 (for RVEs: particle "
+                    "density x packing fraction); in dynamic relaxation it only scales the "
+                    "pseudo-time.");
   prm.leave_subsection();
 }
 
@@ -57,6 +65,8 @@ void Material::parse_parameters(dealii::ParameterHandler& prm)
   shear_modulus = prm.get_double("Shear modulus");
   lame_lambda = prm.get_double("Lame lambda");
   density = prm.get_double("Density");
+  stability_modulus = prm.get_double("Stability modulus");
+  history = prm.get("History");
   prm.leave_subsection();
   if (!(shear_modulus > 0.0 && density > 0.0))
     throw std::runtime_error("subsection Material: 'Shear modulus' and 'Density' must be > 0");
@@ -93,15 +103,19 @@ void Loading::declare_parameters(dealii::ParameterHandler& prm)
 {
   prm.enter_subsection("Loading");
   prm.declare_entry("Boundary", "biaxial", Selection("biaxial|affine"),
-                    "biaxial: bottom edge fixed vertically, bottom-left node fixed, top edge "
-                    "pushed down to 'Axial strain', 'Lateral pressure' normal to the current "
-                    "left and right edges. affine: every boundary node at (F - I) X (patch test).");
+                    "biaxial ([LBS] 3.1): bottom edge fixed vertically, bottom-left node fixed; "
+                    "stage 1 ('Isotropic steps') ramps 'Pressure' normal to the current left, "
+                    "right and top edges; stage 2 ('Load steps') keeps it on the sides and "
+                    "pushes the top edge down to 'Axial strain' of the height after stage 1. "
+                    "affine: every boundary node at (F - I) X (patch test).");
+  prm.declare_entry("Pressure", "0", Double(0.0),
+                    "biaxial: confining follower pressure [force/length in 2D], >= 0.");
+  prm.declare_entry("Isotropic steps", "0", Integer(0), "biaxial: load steps of stage 1.");
   prm.declare_entry("Axial strain", "0.01", Double(-0.5, 0.5),
-                    "biaxial: final compressive strain of the top edge (positive = compression).");
-  prm.declare_entry("Lateral pressure", "0", Double(0.0),
-                    "biaxial: follower pressure on the left and right edges [force/length].");
+                    "biaxial: final compressive strain of stage 2 (positive = compression).");
   prm.declare_entry("Affine F", "1 0 0 1", Anything(), "affine: F11 F12 F21 F22 at the last step.");
-  prm.declare_entry("Load steps", "5", Integer(1), "Load steps (linear ramp of the loading).");
+  prm.declare_entry("Load steps", "5", Integer(1),
+                    "biaxial: load steps of stage 2; affine: load steps (linear ramp).");
   prm.leave_subsection();
 }
 
@@ -109,8 +123,9 @@ void Loading::parse_parameters(dealii::ParameterHandler& prm)
 {
   prm.enter_subsection("Loading");
   boundary = prm.get("Boundary");
+  pressure = prm.get_double("Pressure");
+  isotropic_steps = prm.get_integer("Isotropic steps");
   axial_strain = prm.get_double("Axial strain");
-  lateral_pressure = prm.get_double("Lateral pressure");
   affine_F = prm.get("Affine F");
   steps = prm.get_integer("Load steps");
   prm.leave_subsection();
@@ -130,6 +145,7 @@ void Parameters::declare_parameters(dealii::ParameterHandler& prm)
   Material::declare_parameters(prm);
   DynamicRelaxation::declare_parameters(prm);
   Loading::declare_parameters(prm);
+  rve_driver::RveParameters::declare_parameters(prm);
 }
 
 void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
@@ -142,5 +158,6 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
   material.parse_parameters(prm);
   relaxation.parse_parameters(prm);
   loading.parse_parameters(prm);
+  rve.parse_parameters(prm, base.string());
 }
 } // namespace fe2dem::macro

@@ -6,6 +6,8 @@
  */
 #pragma once
 
+#include "rve_parameters.h"
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
@@ -25,8 +27,10 @@ struct Geometry
 /// subsection Material: the built-in compressible neo-Hookean law.
 struct Material
 {
-  std::string type; ///< neo-Hookean (RVE coupling: not yet)
+  std::string type; ///< neo-Hookean | RVE
   double shear_modulus, lame_lambda, density;
+  double stability_modulus; ///< RVE: upper estimate of the tangent modulus (stable step)
+  std::string history;      ///< RVE: committed | continuous
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm);
 };
@@ -44,10 +48,11 @@ struct DynamicRelaxation
 struct Loading
 {
   std::string boundary;       ///< biaxial | affine
-  double axial_strain;        ///< biaxial: final compressive strain of the top edge
-  double lateral_pressure;    ///< biaxial: follower pressure on left and right edges
+  double pressure;            ///< biaxial: confining follower pressure [force/length]
+  unsigned int isotropic_steps; ///< biaxial stage 1: pressure on left, right and top
+  double axial_strain;        ///< biaxial stage 2: compressive strain of h_ic
   std::string affine_F;       ///< affine: "F11 F12 F21 F22" on all boundary nodes
-  unsigned int steps;
+  unsigned int steps;         ///< biaxial stage 2 / affine: load steps
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm);
 };
@@ -59,6 +64,7 @@ struct Parameters
   Material material;
   DynamicRelaxation relaxation;
   Loading loading;
+  rve_driver::RveParameters rve; ///< subsection RVE (Material type = RVE)
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse(dealii::ParameterHandler& prm, const std::string& file);
 };

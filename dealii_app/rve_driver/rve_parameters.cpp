@@ -155,6 +155,10 @@ void PathParameters::declare_parameters(dealii::ParameterHandler& prm)
                     "'#' starts a comment.");
   prm.declare_entry("Stress tolerance", "1e-2", Double(0.0),
                     "Relative tolerance of stress-controlled components.");
+  prm.declare_entry("Free shear", "false", dealii::Patterns::Bool(),
+                    "isotropic and biaxial: also hold sigma12 = 0 through F12 (and, in the "
+                    "isotropic stage, sigma11 = sigma22 = -p through F11, F22), i.e. the stress "
+                    "state of a macro element whose edges are free in shear.");
   prm.declare_entry("Max stress iterations", "15", Integer(1),
                     "Secant iterations on F per stress-controlled load step.");
   prm.leave_subsection();
@@ -172,6 +176,7 @@ void PathParameters::parse_parameters(dealii::ParameterHandler& prm, const std::
   table_file = resolve(base_dir, prm.get("Table file"));
   stress_tolerance = prm.get_double("Stress tolerance");
   max_stress_iterations = prm.get_integer("Max stress iterations");
+  free_shear = prm.get_bool("Free shear");
   prm.leave_subsection();
   if (type == "isotropic" && (pressure <= 0.0 || isotropic_steps == 0))
     throw std::runtime_error("subsection Path: Type = isotropic needs 'Pressure' > 0 and "

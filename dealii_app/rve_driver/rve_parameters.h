@@ -39,6 +39,7 @@ struct PathParameters
   double axial_strain, shear_strain;
   std::string table_file;
   double stress_tolerance;
+  bool free_shear;           ///< also hold sigma12 = 0 through F12 (as the macro biaxial test)
   unsigned int max_stress_iterations;
 
   static void declare_parameters(dealii::ParameterHandler& prm);

@@ -31,6 +31,7 @@ RvePathRunner::RvePathRunner(const Parameters& parameters)
   // secant iteration corrects it after the first trial.
   slope_iso_ = 2.0 * prm_.rve.kn;
   slope_lateral_ = prm_.rve.kn;
+  slopes_ = {prm_.rve.kn, 0.3 * prm_.rve.kn, 0.3 * prm_.rve.kn, prm_.rve.kn};
 }
 
 void RvePathRunner::open_output()
@@ -102,8 +103,53 @@ unsigned int RvePathRunner::control_stress(double& x, double target, double& slo
   throw std::runtime_error(msg.str());
 }
 
+unsigned int RvePathRunner::control_components(Mat2& F, const std::vector<int>& comps,
+                                               const std::vector<double>& targets,
+                                               const std::string& what)
+{
+  const double scale = std::max(prm_.path.pressure, 1e-12);
+  const double tol = prm_.path.stress_tolerance * scale;
+  Mat2 F_prev = F;
+  Mat2 s_prev = rve_.result().sigma;
+  bool first = true;
+  for (unsigned int it = 1; it <= prm_.path.max_stress_iterations; ++it)
+  {
+    // secant slope per component from the last change, if it has the right sign
+    if (!first)
+      for (int c : comps)
+        if (F[c] != F_prev[c] && (rve_.result().sigma[c] - s_prev[c]) / (F[c] - F_prev[c]) > 0.0)
+          slopes_[c] = (rve_.result().sigma[c] - s_prev[c]) / (F[c] - F_prev[c]);
+    first = false;
+    F_prev = F;
+    s_prev = rve_.result().sigma;
+    for (std::size_t k = 0; k < comps.size(); ++k)
+      F[comps[k]] += std::clamp((targets[k] - s_prev[comps[k]]) / slopes_[comps[k]], -0.01, 0.01);
+    dem_steps_in_step_ += rve_.solve(F).dem_steps;
+    bool done = true;
+    for (std::size_t k = 0; k < comps.size(); ++k)
+      done = done && std::abs(rve_.result().sigma[comps[k]] - targets[k]) <= tol;
+    if (done)
+      return it;
+  }
+  std::ostringstream msg;
+  msg << "stress control of " << what << " did not converge within "
+      << prm_.path.max_stress_iterations
+      << " iterations; raise 'Max stress iterations' or 'Stress tolerance' in subsection Path";
+  throw std::runtime_error(msg.str());
+}
+
 void RvePathRunner::run_isotropic_stage()
 {
+  if (prm_.path.free_shear)
+  {
+    for (unsigned int k = 1; k <= prm_.path.isotropic_steps; ++k)
+    {
+      const double p = -prm_.path.pressure * k / prm_.path.isotropic_steps;
+      const unsigned int its = control_components(F_, {0, 1, 3}, {p, 0.0, p}, "sigma11, sigma12, sigma22");
+      write_row(rve_.result(), its);
+    }
+    return;
+  }
   const unsigned int n = prm_.path.isotropic_steps;
   double lambda = F_[0];
   for (unsigned int k = 1; k <= n; ++k)
@@ -124,6 +170,14 @@ void RvePathRunner::run_biaxial_stage()
   for (unsigned int k = 1; k <= prm_.path.loading_steps; ++k)
   {
     const double F22 = F22_iso * (1.0 - prm_.path.axial_strain * k / prm_.path.loading_steps);
+    if (prm_.path.free_shear)
+    {
+      F_[3] = F22;
+      const unsigned int its =
+        control_components(F_, {0, 1}, {-prm_.path.pressure, 0.0}, "sigma11, sigma12");
+      write_row(rve_.result(), its);
+      continue;
+    }
     unsigned int its = 0;
     if (prm_.path.pressure > 0.0)
       its = control_stress(

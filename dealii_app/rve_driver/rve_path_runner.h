@@ -15,6 +15,7 @@
 
 #include <fstream>
 #include <functional>
+#include <vector>
 
 namespace fe2dem::rve_driver
 {
@@ -42,6 +43,14 @@ private:
                               const std::function<double(const Result&)>& stress,
                               const std::string& what);
 
+  /**
+   * Mixed control: finds the F components @p comps (row-major indices) so
+   * that the same Cauchy components reach @p targets, by simultaneous
+   * secant steps with one slope per component. @return RVE solves used.
+   */
+  unsigned int control_components(Mat2& F, const std::vector<int>& comps,
+                                  const std::vector<double>& targets, const std::string& what);
+
   const Parameters& prm_;
   ServoRve rve_;
   std::ofstream csv_;
@@ -50,5 +59,6 @@ private:
   double t_start_ = 0.0;
   Mat2 F_{1, 0, 0, 1};
   double slope_iso_ = 0.0, slope_lateral_ = 0.0;
+  Mat2 slopes_{};  ///< d sigma_c / d F_c estimates of the mixed control
 };
 } // namespace fe2dem::rve_driver

@@ -55,6 +55,10 @@ void ExplicitSolver<dim>::run()
                 "sigma11_mean,sigma22_mean,J_rel_mean,coordination_mean,anisotropy_mean,"
                 "macro_iterations,dem_steps,wall_s,top_force,affine_deviation\n"
              << std::setprecision(12);
+    std::vector<std::array<double, 2>> positions;
+    for (const PointHistory& h : history_)
+      positions.push_back({h.position[0], h.position[1]});
+    history_file_ = std::make_unique<HistoryWriter>(prm_.output_directory + "/history.h5", positions);
   }
   h_ic_ = prm_.geometry.height;
   const bool biaxial = prm_.loading.boundary == "biaxial";
@@ -267,6 +271,10 @@ void ExplicitSolver<dim>::update_stresses()
         h.P[i][j] = r[p].P(i, j);
     h.coordination = r[p].coordination;
     h.anisotropy = r[p].anisotropy;
+    h.servo_iterations = r[p].servo_iterations;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        h.fabric[i][j] = r[p].fabric(i, j);
     h.dem_steps = r[p].dem_steps;
     dem_steps_in_step_ += r[p].dem_steps;
   }
@@ -392,12 +400,14 @@ void ExplicitSolver<dim>::output_step(unsigned int iterations)
   static const double t0 = MPI_Wtime();
   const unsigned int n_cells = triangulation_.n_active_cells();
   const unsigned int per_cell = history_.size() / n_cells;
-  Vector<double> s11(n_cells), s22(n_cells), ratio(n_cells), j_rel(n_cells);
+  Vector<double> s11(n_cells), s22(n_cells), ratio(n_cells), j_rel(n_cells), coord(n_cells),
+    aniso(n_cells), eq_strain(n_cells);
+  std::vector<IpRecord> records(history_.size());
   double r_min = 1e300, r_max = -1e300, r_sum = 0.0, s11_sum = 0.0, s22_sum = 0.0, j_sum = 0.0;
   double coord_sum = 0.0, aniso_sum = 0.0;
   for (unsigned int p = 0; p < history_.size(); ++p)
   {
-    const Tensor<2, dim>& F = history_[p].F;
+    const Tensor<2, dim> F = history_[p].F;
     const double J = determinant(F);
     const Tensor<2, dim> sigma = history_[p].P * transpose(F) / J;
     const double r = sigma[0][0] + sigma[1][1] != 0.0
@@ -416,19 +426,37 @@ void ExplicitSolver<dim>::output_step(unsigned int iterations)
     s22[p / per_cell] += sigma[1][1] / per_cell;
     ratio[p / per_cell] += r / per_cell;
     j_rel[p / per_cell] += jr / per_cell;
+    coord[p / per_cell] += history_[p].coordination / per_cell;
+    aniso[p / per_cell] += history_[p].anisotropy / per_cell;
+    // incremental equivalent strain: L2 norm of the increment of F - I
+    eq_strain[p / per_cell] += (F - history_[p].F_last_step).norm() / per_cell;
+    history_[p].F_last_step = F;
+    IpRecord& rec = records[p];
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+      {
+        rec.F[2 * i + j] = F[i][j];
+        rec.P[2 * i + j] = history_[p].P[i][j];
+        rec.sigma[2 * i + j] = sigma[i][j];
+        rec.fabric[2 * i + j] = history_[p].fabric[i][j];
+      }
+    rec.coordination = history_[p].coordination;
+    rec.anisotropy = history_[p].anisotropy;
+    rec.servo_iterations = history_[p].servo_iterations;
+    rec.dem_steps = history_[p].dem_steps;
   }
   const double n = history_.size();
   // Reaction on the top edge and deviation from the affine field.
   const double tol = 1e-10 * prm_.geometry.height;
   double top_force = 0.0, dev = 0.0, scale = 0.0;
-  Tensor<2, dim> F = unit_symmetric_tensor<dim>();
-  F += frac * (affine_F_ - unit_symmetric_tensor<dim>());
+  Tensor<2, dim> F_affine = unit_symmetric_tensor<dim>();
+  F_affine += frac * (affine_F_ - unit_symmetric_tensor<dim>());
   for (types::global_dof_index i = 0; i < dof_position_.size(); ++i)
   {
     const Point<dim>& X = dof_position_[i];
     if (X[1] > prm_.geometry.height - tol && dof_component_[i] == 1)
       top_force += f_int_[i];
-    const double affine = (F * X - X)[dof_component_[i]];
+    const double affine = (F_affine * X - X)[dof_component_[i]];
     dev = std::max(dev, std::abs(displacement_[i] - affine));
     scale = std::max(scale, std::abs(affine));
   }
@@ -443,6 +471,7 @@ void ExplicitSolver<dim>::output_step(unsigned int iterations)
   const double axial = stage_ == 2 ? (u_top_ic_ - u_top / n_top) / h_ic_ : 0.0;
   if (rank_ != 0)
     return;
+  history_file_->append(static_cast<int>(step_), axial, records);
   summary_ << step_ << ',' << stage_ << ',' << step_ - 1 + frac << ',' << axial << ','
            << r_sum / n << ',' << r_min << ',' << r_max << ',' << s11_sum / n << ','
            << s22_sum / n << ',' << j_sum / n << ',' << coord_sum / n << ',' << aniso_sum / n
@@ -466,15 +495,18 @@ void ExplicitSolver<dim>::output_step(unsigned int iterations)
   data_out.add_data_vector(s22, "sigma22");
   data_out.add_data_vector(ratio, "stress_ratio");
   data_out.add_data_vector(j_rel, "J_rel");
+  data_out.add_data_vector(coord, "coordination");
+  data_out.add_data_vector(aniso, "anisotropy");
+  data_out.add_data_vector(eq_strain, "equivalent_strain_increment");
   data_out.build_patches();
   std::ostringstream name;
   name << "solution-" << std::setw(4) << std::setfill('0') << step_ << ".vtu";
   std::ofstream vtu(prm_.output_directory + "/" + name.str());
   data_out.write_vtu(vtu);
-  static std::vector<std::pair<double, std::string>> records;
-  records.emplace_back(step_, name.str());
+  static std::vector<std::pair<double, std::string>> pvd_records;
+  pvd_records.emplace_back(step_, name.str());
   std::ofstream pvd(prm_.output_directory + "/solution.pvd");
-  DataOutBase::write_pvd_record(pvd, records);
+  DataOutBase::write_pvd_record(pvd, pvd_records);
 }
 
 template class ExplicitSolver<2>;

@@ -13,6 +13,7 @@
 
 #include "macro_parameters.h"
 #include "neo_hookean.h"
+#include "history_writer.h"
 #include "rve_pool.h"
 
 #include <deal.II/base/conditional_ostream.h>
@@ -43,7 +44,10 @@ private:
     dealii::Point<dim> position;
     double J_ic = 1.0;            ///< det F after the isotropic stage
     double coordination = 0.0, anisotropy = 0.0;
+    dealii::Tensor<2, dim> fabric;
     long dem_steps = 0;           ///< DEM steps of the last RVE solve
+    long servo_iterations = 0;
+    dealii::Tensor<2, dim> F_last_step = dealii::unit_symmetric_tensor<dim>(); ///< F at the last converged step
   };
 
   void make_grid();
@@ -64,6 +68,7 @@ private:
   double u_top_ic_ = 0.0, h_ic_ = 0.0; ///< top displacement and height after stage 1
   long dem_steps_in_step_ = 0;
   std::unique_ptr<fe2dem::RvePool> pool_;
+  std::unique_ptr<HistoryWriter> history_file_;
 
   const Parameters& prm_;
   NeoHookean<dim> material_;

@@ -39,6 +39,7 @@ ExplicitSolver<dim>::ExplicitSolver(const Parameters& parameters)
 template <int dim>
 void ExplicitSolver<dim>::run()
 {
+  t_start_ = MPI_Wtime();
   make_grid();
   setup_system();
   assemble_lumped_mass();
@@ -397,7 +398,6 @@ template <int dim>
 void ExplicitSolver<dim>::output_step(unsigned int iterations)
 {
   const double frac = stage_fraction();
-  static const double t0 = MPI_Wtime();
   const unsigned int n_cells = triangulation_.n_active_cells();
   const unsigned int per_cell = history_.size() / n_cells;
   Vector<double> s11(n_cells), s22(n_cells), ratio(n_cells), j_rel(n_cells), coord(n_cells),
@@ -475,14 +475,14 @@ void ExplicitSolver<dim>::output_step(unsigned int iterations)
   summary_ << step_ << ',' << stage_ << ',' << step_ - 1 + frac << ',' << axial << ','
            << r_sum / n << ',' << r_min << ',' << r_max << ',' << s11_sum / n << ','
            << s22_sum / n << ',' << j_sum / n << ',' << coord_sum / n << ',' << aniso_sum / n
-           << ',' << iterations << ',' << dem_steps_in_step_ << ',' << MPI_Wtime() - t0 << ','
+           << ',' << iterations << ',' << dem_steps_in_step_ << ',' << MPI_Wtime() - t_start_ << ','
            << top_force << ',' << (prm_.loading.boundary == "affine" && scale > 0.0 ? dev / scale : 0.0)
            << '\n';
   summary_.flush();
   pcout_ << "stage " << stage_ << " step " << std::setw(3) << step_ << "  axial strain "
          << std::setw(9) << axial << "  stress ratio " << std::setw(9) << r_sum / n
          << "  DR iterations " << std::setw(6) << iterations << "  DEM steps " << dem_steps_in_step_
-         << "  wall " << std::setprecision(4) << MPI_Wtime() - t0 << " s" << std::setprecision(6)
+         << "  wall " << std::setprecision(4) << MPI_Wtime() - t_start_ << " s" << std::setprecision(6)
          << std::endl;
 
   DataOut<dim> data_out;
@@ -503,10 +503,9 @@ void ExplicitSolver<dim>::output_step(unsigned int iterations)
   name << "solution-" << std::setw(4) << std::setfill('0') << step_ << ".vtu";
   std::ofstream vtu(prm_.output_directory + "/" + name.str());
   data_out.write_vtu(vtu);
-  static std::vector<std::pair<double, std::string>> pvd_records;
-  pvd_records.emplace_back(step_, name.str());
+  pvd_records_.emplace_back(step_, name.str());
   std::ofstream pvd(prm_.output_directory + "/solution.pvd");
-  DataOutBase::write_pvd_record(pvd, pvd_records);
+  DataOutBase::write_pvd_record(pvd, pvd_records_);
 }
 
 template class ExplicitSolver<2>;

@@ -86,5 +86,7 @@ private:
   dealii::ConditionalOStream pcout_;
   dealii::TimerOutput timer_;
   std::ofstream summary_;
+  std::vector<std::pair<double, std::string>> pvd_records_;
+  double t_start_ = 0.0;
 };
 } // namespace fe2dem::macro

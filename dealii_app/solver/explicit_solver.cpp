@@ -104,7 +104,7 @@ void ExplicitSolver<dim>::make_rve_pool()
 
 // End of stage 1: the height and J against which stage 2 is measured.
 template <int dim>
-void ExplicitSolver<dim>::finish_isotropic_stage()
+double ExplicitSolver<dim>::mean_top_displacement() const
 {
   const double tol = 1e-10 * prm_.geometry.height;
   double sum = 0.0;
@@ -115,7 +115,13 @@ void ExplicitSolver<dim>::finish_isotropic_stage()
       sum += displacement_[i];
       ++n;
     }
-  u_top_ic_ = sum / n;
+  return sum / n;
+}
+
+template <int dim>
+void ExplicitSolver<dim>::finish_isotropic_stage()
+{
+  u_top_ic_ = mean_top_displacement();
   h_ic_ = prm_.geometry.height + u_top_ic_;
   for (PointHistory& h : history_)
     h.J_ic = determinant(h.F);
@@ -460,15 +466,7 @@ void ExplicitSolver<dim>::output_step(unsigned int iterations)
     dev = std::max(dev, std::abs(displacement_[i] - affine));
     scale = std::max(scale, std::abs(affine));
   }
-  double u_top = 0.0;
-  int n_top = 0;
-  for (types::global_dof_index i = 0; i < dof_position_.size(); ++i)
-    if (dof_position_[i][1] > prm_.geometry.height - tol && dof_component_[i] == 1)
-    {
-      u_top += displacement_[i];
-      ++n_top;
-    }
-  const double axial = stage_ == 2 ? (u_top_ic_ - u_top / n_top) / h_ic_ : 0.0;
+  const double axial = stage_ == 2 ? (u_top_ic_ - mean_top_displacement()) / h_ic_ : 0.0;
   if (rank_ != 0)
     return;
   history_file_->append(static_cast<int>(step_), axial, records);

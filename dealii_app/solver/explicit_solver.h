@@ -60,6 +60,8 @@ private:
   void assemble_external_force();
   unsigned int relax_load_step();
   void finish_isotropic_stage();
+  /// Mean vertical displacement of the top edge's nodes.
+  double mean_top_displacement() const;
   void output_step(unsigned int iterations);
 
   /// Where the loading is: stage 1 (isotropic) or 2 (axial), step in stage.

@@ -3,6 +3,7 @@
 #include "macro_parameters.h"
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <mpi.h>
@@ -40,6 +41,13 @@ int main(int argc, char** argv)
   {
     std::cerr << "\nfe2dem: error in the parameter file:\n";
     e.print_info(std::cerr);
+    status = 1;
+  }
+  catch (const fe2dem::CouplerError& e)
+  {
+    // Raised on every rank with the same message: say it once.
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cerr << "\nfe2dem: error: " << e.what() << std::endl;
     status = 1;
   }
   catch (const std::exception& e)

@@ -82,6 +82,12 @@ void ExplicitSolver<dim>::run()
 }
 
 template <int dim>
+unsigned int ExplicitSolver<dim>::total_steps() const
+{
+  return (prm_.loading.boundary == "biaxial" ? prm_.loading.isotropic_steps : 0) + prm_.loading.steps;
+}
+
+template <int dim>
 double ExplicitSolver<dim>::stage_fraction() const
 {
   const unsigned int n = stage_ == 1 ? prm_.loading.isotropic_steps : prm_.loading.steps;
@@ -480,8 +486,9 @@ void ExplicitSolver<dim>::output_step(unsigned int iterations)
   pcout_ << "stage " << stage_ << " step " << std::setw(3) << step_ << "  axial strain "
          << std::setw(9) << axial << "  stress ratio " << std::setw(9) << r_sum / n
          << "  DR iterations " << std::setw(6) << iterations << "  DEM steps " << dem_steps_in_step_
-         << "  wall " << std::setprecision(4) << MPI_Wtime() - t_start_ << " s" << std::setprecision(6)
-         << std::endl;
+         << "  wall " << std::setprecision(4) << MPI_Wtime() - t_start_ << " s  ETA "
+         << (MPI_Wtime() - t_start_) / step_ * (total_steps() - step_) << " s"
+         << std::setprecision(6) << std::endl;
 
   DataOut<dim> data_out;
   data_out.attach_dof_handler(dof_handler_);

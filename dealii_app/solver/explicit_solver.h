@@ -67,6 +67,8 @@ private:
   /// Where the loading is: stage 1 (isotropic) or 2 (axial), step in stage.
   unsigned int stage_ = 1, step_in_stage_ = 0, step_ = 0;
   double stage_fraction() const;
+  /// Load steps of the whole run (for the ETA of the progress line).
+  unsigned int total_steps() const;
   double u_top_ic_ = 0.0, h_ic_ = 0.0; ///< top displacement and height after stage 1
   long dem_steps_in_step_ = 0;
   std::unique_ptr<fe2dem::RvePool> pool_;

@@ -31,6 +31,10 @@
  * inner particles by velocity Verlet with local damping, frame particles by
  * prescribed velocities so that tangential contact history sees the motion.
  *
+ * The whole fix state (reference frame, servo unknowns, frame motion, last
+ * results) goes into restart files: write_restart / read_restart and
+ * re-issuing the same fix command continue a solve bit for bit.
+ *
  * Conventions: tension positive; tensors row-major {11, 12, 21, 22};
  * frame forces a_q are the forces the frame applies to particle q.
  * Requires `atom_modify map array`, `atom_style sphere`, `dimension 2`, a

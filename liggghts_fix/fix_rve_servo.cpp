@@ -170,9 +170,11 @@ void FixRveServo::setup(int vflag)
   post_force(vflag);
 }
 
-// Velocity Verlet half step of the inner particles (velocity and spin).
-void FixRveServo::half_kick_inner()
+// Velocity Verlet half step of the inner particles (velocity and spin),
+// followed in the same pass by the position update when @p drift is set.
+void FixRveServo::half_kick_inner(bool drift)
 {
+  double** x = atom->x;
   double** v = atom->v;
   double** f = atom->f;
   double** omega = atom->omega;
@@ -185,6 +187,11 @@ void FixRveServo::half_kick_inner()
     const double dtfm = dtf_ / atom->rmass[i];
     v[i][0] += dtfm * f[i][0];
     v[i][1] += dtfm * f[i][1];
+    if (drift)
+    {
+      x[i][0] += dtv_ * v[i][0];
+      x[i][1] += dtv_ * v[i][1];
+    }
     if (lock_rotation_)
       omega[i][2] = 0.0;
     else
@@ -197,14 +204,7 @@ void FixRveServo::initial_integrate(int)
   double** x = atom->x;
   double** v = atom->v;
   double** omega = atom->omega;
-  const int* mask = atom->mask;
-  half_kick_inner();
-  for (int i = 0; i < atom->nlocal; ++i)
-    if ((mask[i] & groupbit) && !(mask[i] & frame_groupbit_))
-    {
-      x[i][0] += dtv_ * v[i][0];
-      x[i][1] += dtv_ * v[i][1];
-    }
+  half_kick_inner(/*drift=*/true);
 
   // Frame: prescribed velocities; positions interpolated so that the end
   // of a move lands exactly on the target.
@@ -270,7 +270,7 @@ void FixRveServo::post_force(int)
 
 void FixRveServo::final_integrate()
 {
-  half_kick_inner();
+  half_kick_inner(/*drift=*/false);
 }
 
 int FixRveServo::modify_param(int narg, char** arg)

@@ -74,7 +74,7 @@ public:
   struct Result
   {
     fe2dem::Mat2 F{1, 0, 0, 1}, F_check{1, 0, 0, 1};
-    fe2dem::Mat2 P{}, sigma{}, sigma_lw{}, P_lw{};
+    fe2dem::Mat2 P{}, sigma{}, sigma_lw{};
     double residual = 0.0;        ///< r_a (R14)
     double ekin_epot = 0.0;       ///< (R12) over inner particles
     double unbalanced = 0.0;      ///< (R13)
@@ -147,7 +147,7 @@ private:
   void create_contacts_compute();
   template <class Stream>
   void transfer_state(Stream& s);
-  void half_kick_inner();
+  void half_kick_inner(bool drift);
   /// Moment of inertia of particle i (disc or sphere factor).
   double inertia_of(int i) const
   {

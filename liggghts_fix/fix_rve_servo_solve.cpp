@@ -213,7 +213,6 @@ void FixRveServo::homogenise(double ekin)
 {
   checks_since_contact_pass_ = 0;
   Result& r = result_;
-  const Mat2 Finv = fe2dem::inverse(F_);
   collect_contacts();
   r.contacts = fe2dem::contact_statistics(contacts_, n_particles_, law_);
   const double V0 = frame_.reference_volume(), J = fe2dem::det(F_);
@@ -221,7 +220,6 @@ void FixRveServo::homogenise(double ekin)
   r.P = fe2dem::boundary_piola(frame_, frame_force_);
   r.sigma = fe2dem::cauchy_from_piola(r.P, F_);
   r.sigma_lw = (1.0 / (J * V0)) * r.contacts.love_weber_sum;
-  r.P_lw = J * fe2dem::matmul(r.sigma_lw, fe2dem::transpose(Finv));
   r.F_check = fe2dem::frame_deformation(frame_, frame_positions());
   r.ekin_epot = r.contacts.potential_energy > 0.0 ? ekin / r.contacts.potential_energy
                                                   : (ekin > 0.0 ? 1e300 : 0.0);

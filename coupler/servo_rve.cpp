@@ -36,6 +36,16 @@ void write_bytes(const std::string& file, const std::vector<char>& bytes)
 }
 } // namespace
 
+RveSetup packing_setup(const std::string& template_file, const std::string& packing_prefix)
+{
+  RveSetup s;
+  s.template_file = template_file;
+  s.variables = {{"rve_data", packing_prefix + ".rve.data"},
+                 {"rve_vars", packing_prefix + ".vars"},
+                 {"on_failure", "flag"}};
+  return s;
+}
+
 ServoRve::ServoRve(const RveSetup& setup, HistoryMode mode)
   : setup_(setup), mode_(mode), committed_file_(state_file("committed"))
 {

@@ -34,6 +34,13 @@ struct RveSetup
   std::string log_file = "none";
 };
 
+/**
+ * The set-up of an RVE packing made by rve_templates/build_frame.py
+ * (PREFIX.rve.data, PREFIX.vars) in @p template_file, with failures flagged
+ * rather than exiting, so that ServoRve::solve() can raise them.
+ */
+RveSetup packing_setup(const std::string& template_file, const std::string& packing_prefix);
+
 /// Where every trial solve starts (physics.md §2.8).
 enum class HistoryMode
 {

@@ -27,11 +27,7 @@ int main(int argc, char** argv)
   }
   const std::string c = argv[1];
   Checker check("coupler failures " + c + " rank " + std::to_string(rank));
-  RveSetup setup;
-  setup.template_file = argv[2];
-  setup.variables = {{"rve_data", std::string(argv[3]) + ".rve.data"},
-                     {"rve_vars", std::string(argv[3]) + ".vars"},
-                     {"on_failure", "flag"}};
+  RveSetup setup = packing_setup(argv[2], argv[3]);
   const std::vector<QuadraturePoint> points = {{100, 0.25, 0.5, 1.0}, {101, 0.75, 0.5, 1.0}};
   if (c == "broken_template")
   {

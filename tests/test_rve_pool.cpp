@@ -24,11 +24,7 @@ int main(int argc, char** argv)
     MPI_Finalize();
     return 2;
   }
-  RveSetup setup;
-  setup.template_file = argv[1];
-  setup.variables = {{"rve_data", std::string(argv[2]) + ".rve.data"},
-                     {"rve_vars", std::string(argv[2]) + ".vars"},
-                     {"on_failure", "flag"}};
+  const RveSetup setup = packing_setup(argv[1], argv[2]);
   std::vector<QuadraturePoint> points;
   for (int k = 0; k < 8; ++k)
     points.push_back({100 + k, 0.5 * (k % 4), 0.5 * (k / 4), 1.0});

@@ -25,11 +25,9 @@ std::string template_file, packing, log_file = "none";
 RveSetup setup(const std::string& rotation = "free",
               std::map<std::string, std::string> extra = {})
 {
-  RveSetup s;
-  s.template_file = template_file;
+  RveSetup s = packing_setup(template_file, packing);
   s.log_file = log_file; // LIGGGHTS' own messages, if it exits
-  s.variables = {{"rve_data", packing + ".rve.data"}, {"rve_vars", packing + ".vars"},
-                 {"on_failure", "flag"}, {"rotation", rotation}};
+  s.variables["rotation"] = rotation;
   for (const auto& [k, v] : extra)
     s.variables[k] = v;
   return s;

@@ -17,14 +17,7 @@ namespace
 {
 std::string template_file, packing;
 
-RveSetup setup()
-{
-  RveSetup s;
-  s.template_file = template_file;
-  s.variables = {{"rve_data", packing + ".rve.data"}, {"rve_vars", packing + ".vars"},
-                 {"on_failure", "flag"}};
-  return s;
-}
+RveSetup setup() { return packing_setup(template_file, packing); }
 
 /// Bitwise equality of everything a solve returns.
 bool same_bits(const Result& a, const Result& b) { return std::memcmp(&a, &b, sizeof(Result)) == 0; }

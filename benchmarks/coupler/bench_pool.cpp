@@ -40,11 +40,7 @@ int main(int argc, char** argv)
     return 2;
   }
   using namespace fe2dem;
-  RveSetup setup;
-  setup.template_file = argv[1];
-  setup.variables = {{"rve_data", std::string(argv[2]) + ".rve.data"},
-                     {"rve_vars", std::string(argv[2]) + ".vars"},
-                     {"on_failure", "flag"}};
+  const RveSetup setup = packing_setup(argv[1], argv[2]);
   const int n = std::stoi(argv[3]), iterations = std::stoi(argv[4]);
   const HistoryMode mode = std::string(argv[5]) == "committed" ? HistoryMode::committed
                                                                : HistoryMode::continuous;

@@ -20,13 +20,14 @@ int main(int argc, char** argv)
   }
   const std::string prefix = argv[2];
   const long steps = std::stol(argv[3]);
+  fe2dem::RveSetup setup = fe2dem::packing_setup(argv[1], prefix);
+  setup.variables.insert({{"servo_tol", "1e-300"},
+                          {"max_steps", std::to_string(steps + 1000)},
+                          {"check_every", argc == 5 ? argv[4] : "50"}});
   fe2dem::LiggghtsInstance lmp;
-  for (auto [k, v] : {std::pair<std::string, std::string>{"rve_data", prefix + ".rve.data"},
-                      {"rve_vars", prefix + ".vars"}, {"servo_tol", "1e-300"},
-                      {"max_steps", std::to_string(steps + 1000)}, {"on_failure", "flag"},
-                      {"check_every", argc == 5 ? argv[4] : "50"}})
+  for (const auto& [k, v] : setup.variables)
     lmp.set_variable(k, v);
-  lmp.file(argv[1]);
+  lmp.file(setup.template_file);
   auto& fix = lmp.fix<LAMMPS_NS::FixRveServo>("rve");
   lmp.command("run 0 post no");
   const int chunk = fix.check_interval();

@@ -110,12 +110,9 @@ void RveParameters::parse_parameters(dealii::ParameterHandler& prm, const std::s
 
 RveSetup RveParameters::setup(const std::string& log_file) const
 {
-  RveSetup s;
-  s.template_file = template_file;
+  RveSetup s = packing_setup(template_file, packing);
   s.log_file = log_file;
-  s.variables = {{"rve_data", packing + ".rve.data"},
-                 {"rve_vars", packing + ".vars"},
-                 {"kn", number(kn)},
+  s.variables.insert({{"kn", number(kn)},
                  {"kt", number(kt)},
                  {"mu", number(friction)},
                  {"dt", number(time_step)},
@@ -129,8 +126,7 @@ RveSetup RveParameters::setup(const std::string& log_file) const
                  {"servo_tol", number(servo_tolerance)},
                  {"check_every", std::to_string(check_interval)},
                  {"max_steps", std::to_string(step_budget)},
-                 {"start", start},
-                 {"on_failure", "flag"}};
+                 {"start", start}});
   return s;
 }
 

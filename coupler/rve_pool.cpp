@@ -1,5 +1,6 @@
 #include "rve_pool.h"
 
+#include "particle_dump.h"
 #include "template_check.h"
 
 #include <algorithm>
@@ -132,6 +133,12 @@ void RvePool::rollback()
   for (auto& [k, rve] : local_)
     rve->rollback();
   committed_ = true;
+}
+
+void RvePool::write_particles(std::size_t k, const std::string& prefix, long timestep) const
+{
+  if (owner_.at(k) == rank_)
+    write_particle_dump(local_.at(k)->fix(), prefix, timestep);
 }
 
 void RvePool::require_committed(const char* what) const

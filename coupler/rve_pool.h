@@ -73,6 +73,12 @@ public:
   /// Moves RVE @p k to rank @p to through its serialised state. @pre after commit().
   void move(std::size_t k, int to);
 
+  /**
+   * Writes particle pictures of RVE @p k (see particle_dump.h) as they are
+   * after the last solve. Only the owning rank writes; no communication.
+   */
+  void write_particles(std::size_t k, const std::string& prefix, long timestep) const;
+
   int owner(std::size_t k) const { return owner_[k]; }
   std::size_t size() const { return points_.size(); }
   std::size_t n_local() const { return local_.size(); }

@@ -309,6 +309,19 @@ std::vector<Vec2> FixRveServo::frame_positions() const
   return xq;
 }
 
+std::vector<FixRveServo::Particle> FixRveServo::particles() const
+{
+  std::vector<Particle> out(n_particles_);
+  for (int tag = 0; tag < static_cast<int>(tag_to_dense_.size()); ++tag)
+    if (tag_to_dense_[tag] >= 0)
+    {
+      const int i = local_index(tag);
+      out[tag_to_dense_[tag]] = {tag, {atom->x[i][0], atom->x[i][1]}, atom->radius[i],
+                                 (atom->mask[i] & frame_groupbit_) != 0};
+    }
+  return out;
+}
+
 const char* FixRveServo::status_name(Status s)
 {
   switch (s)

@@ -117,6 +117,18 @@ public:
   const std::vector<double>& frame_rotations() const { return theta_frame_; }
   /// Steps between checks: C++ drivers run chunks of this length.
   int check_interval() const { return check_every_; }
+  /// One particle as output sees it (particle pictures, force chains).
+  struct Particle
+  {
+    int tag = 0;
+    fe2dem::Vec2 x{};  ///< current centre
+    double radius = 0.0;
+    bool frame = false; ///< boundary (frame) particle
+  };
+  /// All particles, indexed like Contact::i and Contact::j of contacts().
+  std::vector<Particle> particles() const;
+  /// Contacts found at the last convergence check (end of the last solve).
+  const std::vector<fe2dem::Contact>& contacts() const { return contacts_; }
   /// Human-readable reason of the last failure (empty if none).
   const std::string& failure_reason() const { return failure_reason_; }
 

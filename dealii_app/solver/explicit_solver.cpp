@@ -7,14 +7,15 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
-#include <deal.II/numerics/data_out.h>
 
 #include <mpi.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -27,7 +28,7 @@ template <int dim>
 ExplicitSolver<dim>::ExplicitSolver(const Parameters& parameters)
   : prm_(parameters), material_{parameters.material.shear_modulus, parameters.material.lame_lambda},
     fe_(FE_Q<dim>(1), dim), pcout_(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0),
-    timer_(pcout_, TimerOutput::summary, TimerOutput::wall_times)
+    timer_(pcout_, TimerOutput::never, TimerOutput::wall_times)
 {
   rank_ = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
   std::istringstream s(prm_.loading.affine_F);
@@ -43,11 +44,11 @@ void ExplicitSolver<dim>::run()
   make_grid();
   setup_system();
   assemble_lumped_mass();
+  prepare_output_directory();
   if (prm_.material.type == "RVE")
     make_rve_pool();
   if (rank_ == 0)
   {
-    std::filesystem::create_directories(prm_.output_directory);
     summary_.open(prm_.output_directory + "/summary.csv");
     if (!summary_)
       throw std::runtime_error("cannot write '" + prm_.output_directory +
@@ -61,7 +62,7 @@ void ExplicitSolver<dim>::run()
       positions.push_back({h.position[0], h.position[1]});
     history_file_ = std::make_unique<HistoryWriter>(prm_.output_directory + "/history.h5", positions);
   }
-  h_ic_ = prm_.geometry.height;
+  h_ic_ = hi_[1] - lo_[1];
   const bool biaxial = prm_.loading.boundary == "biaxial";
   const unsigned int n_iso = biaxial ? prm_.loading.isotropic_steps : 0;
   for (stage_ = n_iso > 0 ? 1 : 2; stage_ <= 2; ++stage_)
@@ -79,6 +80,38 @@ void ExplicitSolver<dim>::run()
     if (stage_ == 1)
       finish_isotropic_stage();
   }
+  timer_.print_summary(); // only for a finished run: errors stay readable
+}
+
+// Before the expensive part: the directory exists and is writable, and the
+// dumped IPs exist.
+template <int dim>
+void ExplicitSolver<dim>::prepare_output_directory()
+{
+  for (const unsigned int p : prm_.particle_dumps.points)
+    if (p >= history_.size())
+      throw std::runtime_error("subsection Particle dumps: 'Points' lists " + std::to_string(p) +
+                               ", but the mesh has " + std::to_string(history_.size()) +
+                               " quadrature points (0.." + std::to_string(history_.size() - 1) + ")");
+  if (!prm_.particle_dumps.points.empty() && prm_.material.type != "RVE")
+    throw std::runtime_error("subsection Particle dumps: 'Points' needs 'Type' = RVE in "
+                             "subsection Material");
+  std::string problem;
+  if (rank_ == 0)
+  {
+    std::error_code ec;
+    std::filesystem::create_directories(prm_.output_directory, ec);
+    if (!ec && !prm_.particle_dumps.points.empty())
+      std::filesystem::create_directories(prm_.output_directory + "/particles", ec);
+    const std::string probe = prm_.output_directory + "/.fe2dem-write-test";
+    if (ec || !std::ofstream(probe))
+      problem = "cannot write to 'Output directory' = '" + prm_.output_directory +
+                "': choose a writable directory";
+    std::filesystem::remove(probe, ec);
+  }
+  problem = Utilities::MPI::broadcast(MPI_COMM_WORLD, problem, 0);
+  if (!problem.empty())
+    throw std::runtime_error(problem);
 }
 
 template <int dim>
@@ -112,11 +145,10 @@ void ExplicitSolver<dim>::make_rve_pool()
 template <int dim>
 double ExplicitSolver<dim>::mean_top_displacement() const
 {
-  const double tol = 1e-10 * prm_.geometry.height;
   double sum = 0.0;
   int n = 0;
   for (types::global_dof_index i = 0; i < dof_position_.size(); ++i)
-    if (dof_position_[i][1] > prm_.geometry.height - tol && dof_component_[i] == 1)
+    if (edges_of(dof_position_[i]).top && dof_component_[i] == 1)
     {
       sum += displacement_[i];
       ++n;
@@ -128,7 +160,7 @@ template <int dim>
 void ExplicitSolver<dim>::finish_isotropic_stage()
 {
   u_top_ic_ = mean_top_displacement();
-  h_ic_ = prm_.geometry.height + u_top_ic_;
+  h_ic_ = hi_[1] - lo_[1] + u_top_ic_;
   for (PointHistory& h : history_)
     h.J_ic = determinant(h.F);
 }
@@ -137,11 +169,64 @@ template <int dim>
 void ExplicitSolver<dim>::make_grid()
 {
   const Geometry& g = prm_.geometry;
-  GridGenerator::subdivided_hyper_rectangle(triangulation_, {g.nx, g.ny}, Point<dim>(),
-                                            Point<dim>(g.width, g.height));
+  if (g.mesh_file.empty())
+    GridGenerator::subdivided_hyper_rectangle(triangulation_, {g.nx, g.ny}, Point<dim>(),
+                                              Point<dim>(g.width, g.height));
+  else
+    read_mesh_file();
   if (g.distortion > 0.0)
     GridTools::distort_random(g.distortion, triangulation_, /*keep_boundary=*/true, /*seed=*/42);
   h_min_ = GridTools::minimal_cell_diameter(triangulation_) / std::sqrt(double(dim));
+  const BoundingBox<dim> box = GridTools::compute_bounding_box(triangulation_);
+  lo_ = box.get_boundary_points().first;
+  hi_ = box.get_boundary_points().second;
+  if (prm_.loading.boundary == "biaxial")
+  {
+    // The biaxial conditions act on the four edges of the bounding box.
+    unsigned int n[4] = {0, 0, 0, 0};
+    for (const auto& v : triangulation_.get_vertices())
+    {
+      const Edges e = edges_of(v);
+      n[0] += e.left, n[1] += e.right, n[2] += e.bottom, n[3] += e.top;
+    }
+    const char* names[4] = {"left", "right", "bottom", "top"};
+    for (int k = 0; k < 4; ++k)
+      if (n[k] < 2)
+        throw std::runtime_error("'Boundary' = biaxial needs a rectangular specimen, but the mesh has " +
+                                 std::to_string(n[k]) + " node(s) on the " + names[k] +
+                                 " edge of its bounding box" +
+                                 (g.mesh_file.empty() ? "" : " (mesh file '" + g.mesh_file + "')"));
+  }
+}
+
+template <int dim>
+void ExplicitSolver<dim>::read_mesh_file()
+{
+  const std::string& file = prm_.geometry.mesh_file;
+  GridIn<dim> grid_in(triangulation_);
+  std::ifstream in(file);
+  try
+  {
+    if (std::filesystem::path(file).extension() == ".msh")
+      grid_in.read_msh(in);
+    else
+      grid_in.read_ucd(in);
+  }
+  catch (const ExceptionBase& e)
+  {
+    std::ostringstream why;
+    e.print_info(why);
+    throw std::runtime_error("subsection Geometry: 'Mesh file' = '" + file +
+                             "' could not be read as a " + std::to_string(dim) +
+                             "D quadrilateral mesh: " + why.str());
+  }
+}
+
+template <int dim>
+typename ExplicitSolver<dim>::Edges ExplicitSolver<dim>::edges_of(const Point<dim>& X) const
+{
+  const double tol = 1e-10 * (hi_ - lo_).norm();
+  return {X[0] < lo_[0] + tol, X[0] > hi_[0] - tol, X[1] < lo_[1] + tol, X[1] > hi_[1] - tol};
 }
 
 template <int dim>
@@ -208,8 +293,7 @@ void ExplicitSolver<dim>::assemble_lumped_mass()
 template <int dim>
 void ExplicitSolver<dim>::apply_boundary_values()
 {
-  const Geometry& g = prm_.geometry;
-  const double tol = 1e-10 * std::max(g.width, g.height), frac = stage_fraction();
+  const double frac = stage_fraction();
   boundary_values_.clear();
   Tensor<2, dim> F = unit_symmetric_tensor<dim>();
   F += frac * (affine_F_ - unit_symmetric_tensor<dim>());
@@ -217,8 +301,7 @@ void ExplicitSolver<dim>::apply_boundary_values()
   {
     const Point<dim>& X = dof_position_[i];
     const unsigned int c = dof_component_[i];
-    const bool left = X[0] < tol, right = X[0] > g.width - tol, bottom = X[1] < tol,
-               top = X[1] > g.height - tol;
+    const auto [left, right, bottom, top] = edges_of(X);
     if (prm_.loading.boundary == "affine")
     {
       if (left || right || bottom || top)
@@ -324,16 +407,14 @@ void ExplicitSolver<dim>::assemble_external_force()
   const double p = (stage_ == 1 ? stage_fraction() : 1.0) * prm_.loading.pressure;
   if (prm_.loading.boundary != "biaxial" || p == 0.0)
     return;
-  const double tol = 1e-10 * std::max(prm_.geometry.width, prm_.geometry.height);
   for (const auto& cell : dof_handler_.active_cell_iterators())
     for (const unsigned int f : cell->face_indices())
     {
       const auto face = cell->face(f);
       if (!face->at_boundary())
         continue;
-      const double xc = face->center()[0], yc = face->center()[1];
-      const bool left = xc < tol, right = xc > prm_.geometry.width - tol,
-                 top = stage_ == 1 && yc > prm_.geometry.height - tol; // top loaded in stage 1
+      const Edges e = edges_of(face->center());
+      const bool left = e.left, right = e.right, top = stage_ == 1 && e.top; // top loaded in stage 1
       if (!left && !right && !top)
         continue;
       Point<dim> x[2];
@@ -404,113 +485,6 @@ unsigned int ExplicitSolver<dim>::relax_load_step()
   }
   throw std::runtime_error("load step " + std::to_string(step_) + ": dynamic relaxation did not "
                            "converge within 'Max iterations' = " + std::to_string(dr.max_iterations));
-}
-
-template <int dim>
-void ExplicitSolver<dim>::output_step(unsigned int iterations)
-{
-  const double frac = stage_fraction();
-  const unsigned int n_cells = triangulation_.n_active_cells();
-  const unsigned int per_cell = history_.size() / n_cells;
-  Vector<double> s11(n_cells), s22(n_cells), ratio(n_cells), j_rel(n_cells), coord(n_cells),
-    aniso(n_cells), eq_strain(n_cells);
-  std::vector<IpRecord> records(history_.size());
-  double r_min = 1e300, r_max = -1e300, r_sum = 0.0, s11_sum = 0.0, s22_sum = 0.0, j_sum = 0.0;
-  double coord_sum = 0.0, aniso_sum = 0.0;
-  for (unsigned int p = 0; p < history_.size(); ++p)
-  {
-    const Tensor<2, dim> F = history_[p].F;
-    const double J = determinant(F);
-    const Tensor<2, dim> sigma = history_[p].P * transpose(F) / J;
-    const double r = sigma[0][0] + sigma[1][1] != 0.0
-                       ? std::abs((sigma[0][0] - sigma[1][1]) / (sigma[0][0] + sigma[1][1]))
-                       : 0.0;
-    r_min = std::min(r_min, r);
-    r_max = std::max(r_max, r);
-    r_sum += r;
-    s11_sum += sigma[0][0];
-    s22_sum += sigma[1][1];
-    const double jr = (J - history_[p].J_ic) / history_[p].J_ic;
-    j_sum += jr;
-    coord_sum += history_[p].coordination;
-    aniso_sum += history_[p].anisotropy;
-    s11[p / per_cell] += sigma[0][0] / per_cell;
-    s22[p / per_cell] += sigma[1][1] / per_cell;
-    ratio[p / per_cell] += r / per_cell;
-    j_rel[p / per_cell] += jr / per_cell;
-    coord[p / per_cell] += history_[p].coordination / per_cell;
-    aniso[p / per_cell] += history_[p].anisotropy / per_cell;
-    // incremental equivalent strain: L2 norm of the increment of F - I
-    eq_strain[p / per_cell] += (F - history_[p].F_last_step).norm() / per_cell;
-    history_[p].F_last_step = F;
-    IpRecord& rec = records[p];
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-      {
-        rec.F[2 * i + j] = F[i][j];
-        rec.P[2 * i + j] = history_[p].P[i][j];
-        rec.sigma[2 * i + j] = sigma[i][j];
-        rec.fabric[2 * i + j] = history_[p].fabric[i][j];
-      }
-    rec.coordination = history_[p].coordination;
-    rec.anisotropy = history_[p].anisotropy;
-    rec.servo_iterations = history_[p].servo_iterations;
-    rec.dem_steps = history_[p].dem_steps;
-  }
-  const double n = history_.size();
-  // Reaction on the top edge and deviation from the affine field.
-  const double tol = 1e-10 * prm_.geometry.height;
-  double top_force = 0.0, dev = 0.0, scale = 0.0;
-  Tensor<2, dim> F_affine = unit_symmetric_tensor<dim>();
-  F_affine += frac * (affine_F_ - unit_symmetric_tensor<dim>());
-  for (types::global_dof_index i = 0; i < dof_position_.size(); ++i)
-  {
-    const Point<dim>& X = dof_position_[i];
-    if (X[1] > prm_.geometry.height - tol && dof_component_[i] == 1)
-      top_force += f_int_[i];
-    const double affine = (F_affine * X - X)[dof_component_[i]];
-    dev = std::max(dev, std::abs(displacement_[i] - affine));
-    scale = std::max(scale, std::abs(affine));
-  }
-  const double axial = stage_ == 2 ? (u_top_ic_ - mean_top_displacement()) / h_ic_ : 0.0;
-  if (rank_ != 0)
-    return;
-  history_file_->append(static_cast<int>(step_), axial, records);
-  summary_ << step_ << ',' << stage_ << ',' << step_ - 1 + frac << ',' << axial << ','
-           << r_sum / n << ',' << r_min << ',' << r_max << ',' << s11_sum / n << ','
-           << s22_sum / n << ',' << j_sum / n << ',' << coord_sum / n << ',' << aniso_sum / n
-           << ',' << iterations << ',' << dem_steps_in_step_ << ',' << MPI_Wtime() - t_start_ << ','
-           << top_force << ',' << (prm_.loading.boundary == "affine" && scale > 0.0 ? dev / scale : 0.0)
-           << '\n';
-  summary_.flush();
-  pcout_ << "stage " << stage_ << " step " << std::setw(3) << step_ << "  axial strain "
-         << std::setw(9) << axial << "  stress ratio " << std::setw(9) << r_sum / n
-         << "  DR iterations " << std::setw(6) << iterations << "  DEM steps " << dem_steps_in_step_
-         << "  wall " << std::setprecision(4) << MPI_Wtime() - t_start_ << " s  ETA "
-         << (MPI_Wtime() - t_start_) / step_ * (total_steps() - step_) << " s"
-         << std::setprecision(6) << std::endl;
-
-  DataOut<dim> data_out;
-  data_out.attach_dof_handler(dof_handler_);
-  std::vector<DataComponentInterpretation::DataComponentInterpretation> vec(
-    dim, DataComponentInterpretation::component_is_part_of_vector);
-  data_out.add_data_vector(displacement_, std::vector<std::string>(dim, "displacement"),
-                           DataOut<dim>::type_dof_data, vec);
-  data_out.add_data_vector(s11, "sigma11");
-  data_out.add_data_vector(s22, "sigma22");
-  data_out.add_data_vector(ratio, "stress_ratio");
-  data_out.add_data_vector(j_rel, "J_rel");
-  data_out.add_data_vector(coord, "coordination");
-  data_out.add_data_vector(aniso, "anisotropy");
-  data_out.add_data_vector(eq_strain, "equivalent_strain_increment");
-  data_out.build_patches();
-  std::ostringstream name;
-  name << "solution-" << std::setw(4) << std::setfill('0') << step_ << ".vtu";
-  std::ofstream vtu(prm_.output_directory + "/" + name.str());
-  data_out.write_vtu(vtu);
-  pvd_records_.emplace_back(step_, name.str());
-  std::ofstream pvd(prm_.output_directory + "/solution.pvd");
-  DataOutBase::write_pvd_record(pvd, pvd_records_);
 }
 
 template class ExplicitSolver<2>;

@@ -51,8 +51,16 @@ private:
   };
 
   void make_grid();
+  void read_mesh_file();
+  /// Which edges of the reference mesh's bounding box @p X lies on.
+  struct Edges
+  {
+    bool left, right, bottom, top;
+  };
+  Edges edges_of(const dealii::Point<dim>& X) const;
   void setup_system();
   void assemble_lumped_mass();
+  void prepare_output_directory();
   void make_rve_pool();
   void apply_boundary_values();
   void update_stresses();
@@ -63,6 +71,7 @@ private:
   /// Mean vertical displacement of the top edge's nodes.
   double mean_top_displacement() const;
   void output_step(unsigned int iterations);
+  void write_particle_dumps() const;
 
   /// Where the loading is: stage 1 (isotropic) or 2 (axial), step in stage.
   unsigned int stage_ = 1, step_in_stage_ = 0, step_ = 0;
@@ -86,6 +95,7 @@ private:
   std::vector<PointHistory> history_; ///< cell-major, 2x2 points per cell
   dealii::Tensor<2, dim> affine_F_;
   double h_min_ = 0.0;
+  dealii::Point<dim> lo_, hi_; ///< bounding box of the reference mesh
   int rank_ = 0;
   dealii::ConditionalOStream pcout_;
   dealii::TimerOutput timer_;

@@ -1,6 +1,9 @@
 #include "macro_parameters.h"
 
+#include <deal.II/base/utilities.h>
+
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -20,10 +23,15 @@ void Geometry::declare_parameters(dealii::ParameterHandler& prm)
   prm.declare_entry("Cells y", "1", Integer(1), "Q1 cells along the height.");
   prm.declare_entry("Distortion", "0", Double(0.0, 0.4),
                     "Random shift of interior nodes as a fraction of the cell size (patch tests).");
+  prm.declare_entry("Mesh file", "", Anything(),
+                    "Optional quadrilateral mesh instead of the rectangle of Width, Height and "
+                    "Cells: Gmsh (.msh) or UCD (.inp, .ucd), relative to the parameter file. "
+                    "Biaxial loading finds the left, right, bottom and top edges on its "
+                    "bounding box.");
   prm.leave_subsection();
 }
 
-void Geometry::parse_parameters(dealii::ParameterHandler& prm)
+void Geometry::parse_parameters(dealii::ParameterHandler& prm, const std::string& base)
 {
   prm.enter_subsection("Geometry");
   width = prm.get_double("Width");
@@ -31,7 +39,22 @@ void Geometry::parse_parameters(dealii::ParameterHandler& prm)
   nx = prm.get_integer("Cells x");
   ny = prm.get_integer("Cells y");
   distortion = prm.get_double("Distortion");
+  mesh_file = prm.get("Mesh file");
   prm.leave_subsection();
+  if (!mesh_file.empty())
+  {
+    const std::string given = mesh_file;
+    if (std::filesystem::path(mesh_file).is_relative())
+      mesh_file = (std::filesystem::path(base) / mesh_file).lexically_normal().string();
+    const std::string ext = std::filesystem::path(mesh_file).extension().string();
+    if (ext != ".msh" && ext != ".inp" && ext != ".ucd")
+      throw std::runtime_error("subsection Geometry: 'Mesh file' = '" + given +
+                               "' has extension '" + ext +
+                               "'; give a Gmsh .msh or a UCD .inp/.ucd file");
+    if (!std::ifstream(mesh_file))
+      throw std::runtime_error("subsection Geometry: 'Mesh file' = '" + given + "': cannot read '" +
+                               mesh_file + "' (paths are relative to the parameter file)");
+  }
   if (!(width > 0.0 && height > 0.0))
     throw std::runtime_error("subsection Geometry: 'Width' and 'Height' must be > 0");
 }
@@ -137,6 +160,29 @@ void Loading::parse_parameters(dealii::ParameterHandler& prm)
                              "' must be four numbers F11 F12 F21 F22 with det F > 0");
 }
 
+void ParticleDumps::declare_parameters(dealii::ParameterHandler& prm)
+{
+  prm.enter_subsection("Particle dumps");
+  prm.declare_entry("Points", "", dealii::Patterns::List(Integer(0)),
+                    "RVE: indices of the quadrature points (as in history.h5, cell by cell) "
+                    "whose particles and contact forces are written to "
+                    "OUTPUT/particles/ipNNNN-stepNNNN.{particles,contacts} (LIGGGHTS dump "
+                    "text format; plot with scripts/plot_particles.py). Empty: none.");
+  prm.declare_entry("Every", "1", Integer(1),
+                    "Write them every this many load steps (and at the last step).");
+  prm.leave_subsection();
+}
+
+void ParticleDumps::parse_parameters(dealii::ParameterHandler& prm)
+{
+  prm.enter_subsection("Particle dumps");
+  points.clear();
+  for (const std::string& s : dealii::Utilities::split_string_list(prm.get("Points")))
+    points.push_back(static_cast<unsigned int>(std::stoul(s)));
+  every = prm.get_integer("Every");
+  prm.leave_subsection();
+}
+
 void Parameters::declare_parameters(dealii::ParameterHandler& prm)
 {
   prm.declare_entry("Output directory", "output", Anything(),
@@ -145,6 +191,7 @@ void Parameters::declare_parameters(dealii::ParameterHandler& prm)
   Material::declare_parameters(prm);
   DynamicRelaxation::declare_parameters(prm);
   Loading::declare_parameters(prm);
+  ParticleDumps::declare_parameters(prm);
   rve_driver::RveParameters::declare_parameters(prm);
 }
 
@@ -154,10 +201,11 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
   const auto base = std::filesystem::path(file).parent_path();
   const std::string out = prm.get("Output directory");
   output_directory = std::filesystem::path(out).is_absolute() ? out : (base / out).lexically_normal().string();
-  geometry.parse_parameters(prm);
+  geometry.parse_parameters(prm, base.string());
   material.parse_parameters(prm);
   relaxation.parse_parameters(prm);
   loading.parse_parameters(prm);
+  particle_dumps.parse_parameters(prm);
   rve.parse_parameters(prm, base.string());
 }
 } // namespace fe2dem::macro

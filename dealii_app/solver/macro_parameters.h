@@ -11,17 +11,20 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
+#include <vector>
 
 namespace fe2dem::macro
 {
-/// subsection Geometry: a subdivided rectangle [0, width] x [0, height].
+/// subsection Geometry: a subdivided rectangle [0, width] x [0, height], or a mesh file.
 struct Geometry
 {
   double width, height;
   unsigned int nx, ny;
-  double distortion; ///< random interior node shift / cell size (patch tests)
+  double distortion;     ///< random interior node shift / cell size (patch tests)
+  std::string mesh_file; ///< Gmsh (.msh) or UCD (.inp, .ucd) file; empty: the rectangle
   static void declare_parameters(dealii::ParameterHandler& prm);
-  void parse_parameters(dealii::ParameterHandler& prm);
+  /// @param base directory of the parameter file (relative mesh paths).
+  void parse_parameters(dealii::ParameterHandler& prm, const std::string& base);
 };
 
 /// subsection Material: the built-in compressible neo-Hookean law.
@@ -57,6 +60,15 @@ struct Loading
   void parse_parameters(dealii::ParameterHandler& prm);
 };
 
+/// subsection Particle dumps: particle pictures of chosen IPs (coupler/particle_dump.h).
+struct ParticleDumps
+{
+  std::vector<unsigned int> points; ///< IP indices as in history.h5
+  unsigned int every;               ///< every this many load steps (and the last)
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm);
+};
+
 struct Parameters
 {
   std::string output_directory;
@@ -64,6 +76,7 @@ struct Parameters
   Material material;
   DynamicRelaxation relaxation;
   Loading loading;
+  ParticleDumps particle_dumps;
   rve_driver::RveParameters rve; ///< subsection RVE (Material type = RVE)
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse(dealii::ParameterHandler& prm, const std::string& file);

@@ -24,7 +24,9 @@ int main(int argc, char** argv)
     {
       std::cout << "Usage: fe2dem FILE.prm            run the macro problem of FILE.prm\n"
                    "       fe2dem --print-parameters  every parameter, default and doc\n"
-                   "Status: built-in neo-Hookean material; RVE coupling comes next (issue 4).\n";
+                   "Runs under mpirun -np N; results do not depend on N. Outputs in the\n"
+                   "'Output directory': summary.csv, history.h5, solution-NNNN.vtu, solution.pvd\n"
+                   "and particles/ (subsection Particle dumps).\n";
       status = argc == 2 ? 0 : 2;
     }
     else if (std::strcmp(argv[1], "--print-parameters") == 0)

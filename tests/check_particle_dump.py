@@ -1,0 +1,58 @@
+#!/usr/bin/python3
+"""Checks the particle dumps of fe2dem against its history.h5.
+
+Usage: check_particle_dump.py OUTPUT_DIR IP STEP [OTHER_OUTPUT_DIR]
+For IP at load STEP: the dump files exist and parse, every contact joins two
+listed particles at their listed centres, fn > 0 (the dump lists touching
+pairs, which carry compression), and 2 C / N equals the coordination in
+history.h5 (same contact count). With OTHER_OUTPUT_DIR the files must be
+byte-identical there (rank-count independence).
+"""
+import filecmp
+import sys
+
+import h5py
+
+out, ip, step = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+prefix = f"{out}/particles/ip{ip:04d}-step{step:04d}"
+failures = []
+
+
+def read_dump(path, count_item):
+    lines = open(path).read().splitlines()
+    n = int(lines[lines.index(count_item) + 1])
+    header = next(i for i, l in enumerate(lines) if l.startswith(("ITEM: ATOMS", "ITEM: ENTRIES")))
+    columns = lines[header].split()[2:]
+    rows = [dict(zip(columns, map(float, l.split()))) for l in lines[header + 1:]]
+    if len(rows) != n:
+        failures.append(f"{path}: {len(rows)} rows, header says {n}")
+    if int(lines[lines.index("ITEM: TIMESTEP") + 1]) != step:
+        failures.append(f"{path}: TIMESTEP is not {step}")
+    return rows
+
+
+particles = {int(p["id"]): p for p in read_dump(prefix + ".particles", "ITEM: NUMBER OF ATOMS")}
+contacts = read_dump(prefix + ".contacts", "ITEM: NUMBER OF ENTRIES")
+for c in contacts:
+    for k in ("1", "2"):
+        p = particles.get(int(c["id" + k]))
+        if p is None or abs(p["x"] - c["x" + k]) > 1e-12 or abs(p["y"] - c["y" + k]) > 1e-12:
+            failures.append(f"contact {int(c['id1'])}-{int(c['id2'])}: end {k} not at its particle")
+    if not c["fn"] > 0:
+        failures.append(f"contact {int(c['id1'])}-{int(c['id2'])}: fn = {c['fn']} not > 0")
+with h5py.File(f"{out}/history.h5", "r") as h:
+    row = list(h["step"][:]).index(step)
+    coordination = h["coordination"][row, ip]
+z = 2.0 * len(contacts) / len(particles)
+print(f"{prefix}: {len(particles)} particles ({sum(p['frame'] for p in particles.values()):.0f} "
+      f"frame), {len(contacts)} contacts, 2C/N = {z:.6f}, history.h5 coordination = {coordination:.6f}")
+if abs(z - coordination) > 1e-12:
+    failures.append(f"2C/N = {z} differs from history.h5 coordination {coordination}")
+if len(sys.argv) > 4:
+    for ext in (".particles", ".contacts"):
+        other = f"{sys.argv[4]}/particles/ip{ip:04d}-step{step:04d}{ext}"
+        if not filecmp.cmp(prefix + ext, other, shallow=False):
+            failures.append(f"{prefix + ext} differs from {other}")
+for f in failures:
+    print("FAIL", f)
+sys.exit(1 if failures else 0)

@@ -32,7 +32,7 @@ double sign(double v) { return (v > 0.0) - (v < 0.0); }
 FixRveServo::FixRveServo(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg)
 {
   vector_flag = 1;
-  size_vector = 38;
+  size_vector = 39;
   global_freq = 1;
   extvector = 0;
   time_integrate = 1;
@@ -149,6 +149,7 @@ void FixRveServo::init()
   dtf_ = 0.5 * update->dt * force->ftm2v;
   lookup_contact_law();
   error_checks();
+  build_membrane();
   if (solve_pending_)
     begin_solve();
 }
@@ -246,8 +247,11 @@ void FixRveServo::post_force(int)
   const int* mask = atom->mask;
 
   for (std::size_t q = 0; q < frame_.particles.size(); ++q)
+    frame_local_[q] = local_index(frame_.particles[q].tag);
+  apply_membrane();
+  for (std::size_t q = 0; q < frame_.particles.size(); ++q)
   {
-    const int i = frame_local_[q] = local_index(frame_.particles[q].tag);
+    const int i = frame_local_[q];
     frame_force_[q] = {-f[i][0], -f[i][1]};
     frame_moment_[q] = -torque[i][2];
   }
@@ -358,7 +362,8 @@ double FixRveServo::compute_vector(int n)
   if (n == 28) return r.contacts.n_contacts;
   if (n == 29) return r.max_inner_omega;
   if (n < 34) return tensor(r.contacts.fabric, n - 30);
-  return tensor(r.F, n - 34);
+  if (n < 38) return tensor(r.F, n - 34);
+  return static_cast<double>(r.membrane_steps);
 }
 
 double FixRveServo::memory_usage()

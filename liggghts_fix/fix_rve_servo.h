@@ -23,6 +23,13 @@
  *     start keep|reset         keep or reset frame fluctuations at a new F, default keep
  *     move_rate FRAC           largest frame move per step / R_min, default 1e-3
  *     on_failure error|flag    stop LIGGGHTS or only set the status, default error
+ *     membrane yes|no          frame membrane: an inner particle whose centre comes
+ *                              closer than its radius to the line between two
+ *                              neighbouring frame particles is pushed back with the
+ *                              normal contact stiffness, the reaction going to those
+ *                              two frame particles (and so into P); keeps particles
+ *                              from slipping through gaps that open when the frame
+ *                              stretches. Default yes (see README)
  *
  * `fix_modify ID F f11 f12 f21 f22` starts a new solve under a new F. The
  * solve advances while the script (or C++) runs steps; f_ID[1] is the status.
@@ -51,6 +58,7 @@
 #include "fix.h"
 #include "rve_homogenisation.h"
 
+#include <array>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -82,6 +90,7 @@ public:
     double max_inner_omega = 0.0; ///< max |omega| of inner particles
     int servo_iterations = 0;
     long dem_steps = 0;           ///< steps of this solve
+    long membrane_steps = 0;      ///< particle-steps of this solve with a membrane contact
     fe2dem::ContactStatistics contacts;
   };
 
@@ -160,6 +169,18 @@ private:
   template <class Stream>
   void transfer_state(Stream& s);
   void half_kick_inner(bool drift);
+
+  // --- frame membrane (fix_rve_servo_membrane.cpp) --------------------------
+  /// Segments between neighbouring frame particles, grouped by cell side.
+  void build_membrane();
+  /// Adds membrane forces to inner and frame particles (before frame forces are recorded).
+  void apply_membrane();
+  struct MembraneSegment
+  {
+    int a = 0, b = 0;     ///< frame indices, counter-clockwise
+    double lo = 0, hi = 0; ///< reference extent along the side
+  };
+  std::array<std::vector<MembraneSegment>, 4> membrane_; ///< bottom, right, top, left
   /// Moment of inertia of particle i (disc or sphere factor).
   double inertia_of(int i) const
   {
@@ -183,6 +204,7 @@ private:
   bool keep_fluctuations_ = true;
   double move_rate_ = 1e-3;
   bool error_on_failure_ = true;
+  bool membrane_on_ = true;
 
   // frame
   fe2dem::FrameTopology frame_;

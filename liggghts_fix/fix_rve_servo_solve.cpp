@@ -30,6 +30,7 @@ void FixRveServo::begin_solve()
   result_.F = F_;
   result_.servo_iterations = 0;
   result_.dem_steps = 0;
+  result_.membrane_steps = 0;
   result_.residual = std::numeric_limits<double>::infinity(); // not evaluated yet
   checks_since_contact_pass_ = 1 << 30; // first relaxed check of a solve: fresh contact pass
   solve_pending_ = false;

@@ -71,6 +71,11 @@ void RveParameters::declare_parameters(dealii::ParameterHandler& prm)
                     "Dimensionless servo gain g_a M/dt^2 ([LBS] prints 100, which diverges here).");
   prm.declare_entry("Moment gain", "10", Double(0.0),
                     "Dimensionless servo gain g_m M R^2/dt^2.");
+  prm.declare_entry("Frame membrane", "yes", Selection("yes|no"),
+                    "yes: an inner particle that comes within its radius of the line between "
+                    "two neighbouring frame particles is pushed back (normal stiffness), the "
+                    "reaction going into the frame forces; keeps particles inside a frame "
+                    "stretched at large strain. no: the frame of [LBS] alone.");
   prm.declare_entry("Check interval", "50", Integer(1),
                     "DEM steps between convergence checks (and C++ run chunk length).");
   prm.declare_entry("Step budget", "2000000", Integer(1),
@@ -98,6 +103,7 @@ void RveParameters::parse_parameters(dealii::ParameterHandler& prm, const std::s
   gain_m = prm.get_double("Moment gain");
   check_interval = prm.get_integer("Check interval");
   step_budget = prm.get_integer("Step budget");
+  membrane = prm.get("Frame membrane");
   prm.leave_subsection();
   for (auto [name, v] : {std::pair{"Normal stiffness", kn}, {"Tangential stiffness", kt},
                          {"Time step", time_step}, {"Relaxation tolerance", relaxation_tolerance},
@@ -126,7 +132,8 @@ RveSetup RveParameters::setup(const std::string& log_file) const
                  {"servo_tol", number(servo_tolerance)},
                  {"check_every", std::to_string(check_interval)},
                  {"max_steps", std::to_string(step_budget)},
-                 {"start", start}});
+                 {"start", start},
+                 {"membrane", membrane}});
   return s;
 }
 

@@ -23,6 +23,7 @@ struct RveParameters
   std::string rotation, start, relaxation_criterion;
   double relaxation_tolerance, servo_tolerance, gain_a, gain_m;
   unsigned int check_interval, step_budget;
+  std::string membrane; ///< yes | no: frame membrane of fix rve/servo
 
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm, const std::string& base_dir);

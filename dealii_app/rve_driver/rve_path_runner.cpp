@@ -47,7 +47,7 @@ void RvePathRunner::open_output()
       csv_ << ',' << t << ij;
   csv_ << ",residual,ekin_epot,servo_iterations,dem_steps,coordination,anisotropy,"
           "packing_fraction,wall_s,mechanical_coordination,contacts,sliding_contacts,"
-          "max_overlap,F_check_error,stress_iterations\n";
+          "max_overlap,F_check_error,stress_iterations,membrane_steps\n";
   csv_ << std::setprecision(12);
 }
 
@@ -63,7 +63,7 @@ void RvePathRunner::write_row(const Result& r, unsigned int stress_iterations)
        << ',' << r.packing_fraction << ',' << MPI_Wtime() - t_start_ << ','
        << r.contacts.mechanical_coordination << ',' << r.contacts.n_contacts << ','
        << r.contacts.n_sliding << ',' << r.contacts.max_overlap << ',' << F_check_error << ','
-       << stress_iterations << '\n';
+       << stress_iterations << ',' << r.membrane_steps << '\n';
   csv_.flush();
   std::cout << "step " << std::setw(3) << step_ << "  F11 " << std::setw(9) << r.F[0] << "  F22 "
             << std::setw(9) << r.F[3] << "  F12 " << std::setw(9) << r.F[1] << "  sigma11 "

@@ -28,7 +28,32 @@ RvePool::RvePool(MPI_Comm comm, const RveSetup& setup, HistoryMode mode,
 {
   MPI_Comm_rank(comm_, &rank_);
   MPI_Comm_size(comm_, &n_ranks_);
-  // Check the template once, in a child process, before any instance exists.
+  check_template();
+  place_in_blocks();
+  for (std::size_t k = 0; k < points_.size(); ++k)
+    if (owner_[k] == rank_)
+      local_[k] = std::make_unique<ServoRve>(setup_, mode_);
+}
+
+RvePool::RvePool(MPI_Comm comm, const RveSetup& setup, HistoryMode mode,
+                 const std::vector<QuadraturePoint>& points, const StateSource& state_of,
+                 int load_step)
+  : comm_(comm), setup_(setup), mode_(mode), points_(points), owner_(points.size()),
+    cost_(points.size(), 0.0), load_step_(load_step)
+{
+  MPI_Comm_rank(comm_, &rank_);
+  MPI_Comm_size(comm_, &n_ranks_);
+  check_template();
+  place_in_blocks();
+  for (std::size_t k = 0; k < points_.size(); ++k)
+    if (owner_[k] == rank_)
+      local_[k] = ServoRve::restore(setup_, state_of(k), mode_);
+}
+
+// The template is checked once, in a child process, before any instance
+// exists: a LIGGGHTS error there would exit(1) this whole MPI job.
+void RvePool::check_template() const
+{
   std::string problem;
   if (rank_ == 0)
     try
@@ -47,12 +72,39 @@ RvePool::RvePool(MPI_Comm comm, const RveSetup& setup, HistoryMode mode,
     MPI_Bcast(&problem[0], length, MPI_CHAR, 0, comm_);
     throw TemplateError(problem);
   }
+}
+
+void RvePool::place_in_blocks()
+{
   const std::size_t n = points_.size();
   for (std::size_t k = 0; k < n; ++k)
     owner_[k] = static_cast<int>(k * n_ranks_ / std::max<std::size_t>(n, 1));
-  for (std::size_t k = 0; k < n; ++k)
-    if (owner_[k] == rank_)
-      local_[k] = std::make_unique<ServoRve>(setup_, mode_);
+}
+
+std::vector<std::vector<char>> RvePool::gather_committed_states(int root) const
+{
+  std::vector<std::vector<char>> states(rank_ == root ? points_.size() : 0);
+  for (std::size_t k = 0; k < points_.size(); ++k)
+  {
+    const int from = owner_[k];
+    if (from == root && rank_ == root)
+      states[k] = local_.at(k)->committed_state();
+    else if (rank_ == from)
+    {
+      const std::vector<char> state = local_.at(k)->committed_state();
+      const long n = static_cast<long>(state.size());
+      MPI_Send(&n, 1, MPI_LONG, root, 2, comm_);
+      MPI_Send(state.data(), static_cast<int>(n), MPI_CHAR, root, 3, comm_);
+    }
+    else if (rank_ == root)
+    {
+      long n = 0;
+      MPI_Recv(&n, 1, MPI_LONG, from, 2, comm_, MPI_STATUS_IGNORE);
+      states[k].resize(n);
+      MPI_Recv(states[k].data(), static_cast<int>(n), MPI_CHAR, from, 3, comm_, MPI_STATUS_IGNORE);
+    }
+  }
+  return states;
 }
 
 std::vector<RveResponse> RvePool::solve(const std::vector<Eigen::Matrix2d>& F)
@@ -139,6 +191,12 @@ void RvePool::write_particles(std::size_t k, const std::string& prefix, long tim
 {
   if (owner_.at(k) == rank_)
     write_particle_dump(local_.at(k)->fix(), prefix, timestep);
+}
+
+void RvePool::command(std::size_t k, const std::string& liggghts_command)
+{
+  if (owner_.at(k) == rank_)
+    local_.at(k)->instance().command(liggghts_command);
 }
 
 void RvePool::require_committed(const char* what) const

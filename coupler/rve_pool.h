@@ -18,6 +18,7 @@
 #include <Eigen/Dense>
 #include <mpi.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -51,6 +52,23 @@ public:
   RvePool(MPI_Comm comm, const RveSetup& setup, HistoryMode mode,
           const std::vector<QuadraturePoint>& points);
 
+  /// Where the RVEs of a resumed run come from: the committed state of RVE k.
+  using StateSource = std::function<std::vector<char>(std::size_t k)>;
+  /**
+   * Rebuilds the pool from saved committed states (e.g. a checkpoint) in
+   * block placement over this communicator, whatever the placement was when
+   * they were saved; @p load_step is the number of committed load steps.
+   * Each rank asks @p state_of only for its own RVEs.
+   */
+  RvePool(MPI_Comm comm, const RveSetup& setup, HistoryMode mode,
+          const std::vector<QuadraturePoint>& points, const StateSource& state_of, int load_step);
+
+  /**
+   * The committed state of every RVE (the last commit(), also in the middle
+   * of a load step), gathered on rank @p root (nothing elsewhere). Collective.
+   */
+  std::vector<std::vector<char>> gather_committed_states(int root) const;
+
   /**
    * One trial solve of every RVE. @p F holds one deformation gradient per
    * point, in the order of the constructor's list, identical on all ranks.
@@ -79,6 +97,13 @@ public:
    */
   void write_particles(std::size_t k, const std::string& prefix, long timestep) const;
 
+  /**
+   * Runs one LIGGGHTS command in RVE @p k's instance (on its owner; no
+   * communication), e.g. `fix_modify rve max_steps 1` to inject a fault in
+   * tests. Not part of the saved state: a rollback or restore drops it.
+   */
+  void command(std::size_t k, const std::string& liggghts_command);
+
   int owner(std::size_t k) const { return owner_[k]; }
   std::size_t size() const { return points_.size(); }
   std::size_t n_local() const { return local_.size(); }
@@ -90,6 +115,8 @@ public:
 
 private:
   void require_committed(const char* what) const;
+  void check_template() const;
+  void place_in_blocks();
   MPI_Comm comm_;
   int rank_ = 0, n_ranks_ = 1;
   RveSetup setup_;

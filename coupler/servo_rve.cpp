@@ -72,6 +72,7 @@ std::unique_ptr<ServoRve> ServoRve::restore(const RveSetup& setup, const std::ve
   std::filesystem::rename(file, rve->committed_file_);
   rve->committed_bytes_ = state.size();
   rve->at_committed_state_ = true;
+  rve->committed_F_ = rve->fix_->result().F;
   return rve;
 }
 
@@ -136,6 +137,13 @@ std::vector<char> ServoRve::serialise()
   std::vector<char> bytes = read_bytes(file);
   std::filesystem::remove(file);
   return bytes;
+}
+
+std::vector<char> ServoRve::committed_state() const
+{
+  if (committed_bytes_ == 0)
+    throw std::logic_error("ServoRve::committed_state() before any commit()");
+  return read_bytes(committed_file_);
 }
 
 void ServoRve::run_until_done()

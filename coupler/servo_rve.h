@@ -89,6 +89,8 @@ public:
   void rollback() override;
   /// The full current state as bytes (a LIGGGHTS restart image).
   std::vector<char> serialise() override;
+  /// The last committed state as bytes, without touching the instance (checkpoints).
+  std::vector<char> committed_state() const;
 
   const Result& result() const { return fix_->result(); }
   LAMMPS_NS::FixRveServo& fix() { return *fix_; }

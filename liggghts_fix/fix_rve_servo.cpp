@@ -287,6 +287,18 @@ int FixRveServo::modify_param(int narg, char** arg)
     begin_solve();
     return 5;
   }
+  if (std::strcmp(arg[0], "max_steps") == 0)
+  {
+    if (narg < 2)
+      error->fix_error(FLERR, this, "fix_modify keyword 'max_steps' needs 1 value");
+    char* end = nullptr;
+    const double n = std::strtod(arg[1], &end);
+    if (*end != '\0' || !(n >= 1.0))
+      error->fix_error(FLERR, this, (std::string("fix_modify keyword 'max_steps': '") + arg[1] +
+                                     "' is not an integer >= 1").c_str());
+    max_steps_ = static_cast<long>(n);
+    return 2;
+  }
   return 0;
 }
 

@@ -31,7 +31,8 @@
  *                              from slipping through gaps that open when the frame
  *                              stretches. Default yes (see README)
  *
- * `fix_modify ID F f11 f12 f21 f22` starts a new solve under a new F. The
+ * `fix_modify ID F f11 f12 f21 f22` starts a new solve under a new F;
+ * `fix_modify ID max_steps N` changes the step budget (not kept in restarts). The
  * solve advances while the script (or C++) runs steps; f_ID[1] is the status.
  *
  * The fix integrates every particle itself (do not add fix nve/sphere):

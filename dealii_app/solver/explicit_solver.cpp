@@ -1,5 +1,7 @@
 #include "explicit_solver.h"
 
+#include "checkpoint_file.h"
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -11,6 +13,8 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <mpi.h>
+
+#include <csignal>
 
 #include <algorithm>
 #include <cmath>
@@ -25,10 +29,11 @@ namespace fe2dem::macro
 using namespace dealii;
 
 template <int dim>
-ExplicitSolver<dim>::ExplicitSolver(const Parameters& parameters)
+ExplicitSolver<dim>::ExplicitSolver(const Parameters& parameters, bool resume)
   : prm_(parameters), material_{parameters.material.shear_modulus, parameters.material.lame_lambda},
     fe_(FE_Q<dim>(1), dim), pcout_(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0),
-    timer_(pcout_, TimerOutput::never, TimerOutput::wall_times)
+    timer_(pcout_, TimerOutput::never, TimerOutput::wall_times), resume_(resume),
+    checkpoint_directory_(parameters.output_directory + "/checkpoints")
 {
   rank_ = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
   std::istringstream s(prm_.loading.affine_F);
@@ -45,42 +50,111 @@ void ExplicitSolver<dim>::run()
   setup_system();
   assemble_lumped_mass();
   prepare_output_directory();
-  if (prm_.material.type == "RVE")
-    make_rve_pool();
-  if (rank_ == 0)
-  {
-    summary_.open(prm_.output_directory + "/summary.csv");
-    if (!summary_)
-      throw std::runtime_error("cannot write '" + prm_.output_directory +
-                               "/summary.csv': check 'Output directory'");
-    summary_ << "step,stage,time,axial_strain,stress_ratio_mean,stress_ratio_min,stress_ratio_max,"
-                "sigma11_mean,sigma22_mean,J_rel_mean,coordination_mean,anisotropy_mean,"
-                "macro_iterations,dem_steps,wall_s,top_force,affine_deviation\n"
-             << std::setprecision(12);
-    std::vector<std::array<double, 2>> positions;
-    for (const PointHistory& h : history_)
-      positions.push_back({h.position[0], h.position[1]});
-    history_file_ = std::make_unique<HistoryWriter>(prm_.output_directory + "/history.h5", positions);
-  }
   h_ic_ = hi_[1] - lo_[1];
-  const bool biaxial = prm_.loading.boundary == "biaxial";
-  const unsigned int n_iso = biaxial ? prm_.loading.isotropic_steps : 0;
-  for (stage_ = n_iso > 0 ? 1 : 2; stage_ <= 2; ++stage_)
+  stage_ = steps_in_stage(1) > 0 ? 1 : 2;
+  const std::string checkpoint = resume_ ? resume_from_checkpoint() : "";
+  if (prm_.material.type == "RVE")
+    make_rve_pool(checkpoint);
+  open_output_files(checkpoint);
+  save_converged_state();
+  try
   {
-    const unsigned int n = stage_ == 1 ? n_iso : prm_.loading.steps;
-    for (step_in_stage_ = 1; step_in_stage_ <= n; ++step_in_stage_)
+    for (; stage_ <= 2; ++stage_, step_in_stage_ = 0)
     {
-      ++step_;
-      const unsigned int iterations = relax_load_step();
-      if (pool_)
-        pool_->commit();
-      TimerOutput::Scope t(timer_, "output");
-      output_step(iterations);
+      while (step_in_stage_ < steps_in_stage(stage_))
+      {
+        ++step_in_stage_;
+        ++step_;
+        const unsigned int iterations = solve_load_step();
+        {
+          TimerOutput::Scope t(timer_, "output");
+          output_step(iterations);
+        }
+        save_converged_state();
+        if (prm_.checkpoint.every > 0 && step_ % prm_.checkpoint.every == 0)
+          write_checkpoint();
+      }
+      if (stage_ == 1)
+        finish_isotropic_stage();
     }
-    if (stage_ == 1)
-      finish_isotropic_stage();
+  }
+  catch (const StopSignal& s)
+  {
+    const std::string file = write_checkpoint();
+    pcout_ << "\nfe2dem: received " << (s.signal == SIGTERM ? "SIGTERM" : "SIGUSR1")
+           << " during load step " << step_ << ": wrote " << file << " (load step "
+           << converged_.step << ") and stopped.\nContinue with: fe2dem " << prm_.file
+           << " --resume" << std::endl;
+    return;
   }
   timer_.print_summary(); // only for a finished run: errors stay readable
+}
+
+// A load step in sub-steps: one, unless an RVE fails; then every RVE and
+// the mesh return to the last converged (sub)step and the rest is retried
+// in halves. Fractions are dyadic, so sums are exact and an uncut step ends
+// exactly on step_in_stage / n.
+template <int dim>
+unsigned int ExplicitSolver<dim>::solve_load_step()
+{
+  dem_steps_in_step_ = 0;
+  const double n = steps_in_stage(stage_);
+  double done = 0.0, size = 1.0;
+  unsigned int iterations = 0, cuts = 0;
+  bool first_attempt = true;
+  Vector<double> start = displacement_;
+  while (done < 1.0)
+  {
+    load_fraction_ = (static_cast<double>(step_in_stage_ - 1) + (done + size)) / n;
+    try
+    {
+      inject_fault_if_due(first_attempt);
+      first_attempt = false;
+      iterations += relax_load_step();
+      if (pool_)
+        pool_->commit();
+      done += size;
+      start = displacement_;
+    }
+    catch (const CouplerError& e)
+    {
+      if (!prm_.faults.cut_step || cuts == prm_.faults.max_cuts)
+      {
+        const std::string file = write_checkpoint();
+        throw CouplerError(
+          e.ip_id, std::string(e.what()) + "\n" +
+                     (prm_.faults.cut_step ? "The load step was cut " + std::to_string(cuts) +
+                                               " times ('Max step cuts') without success"
+                                           : std::string("'On RVE failure' = stop")) +
+                     ": the run stopped after writing " + file + " (last converged load step " +
+                     std::to_string(converged_.step) + "). Remove the cause, then continue with: fe2dem " +
+                     prm_.file + " --resume");
+      }
+      ++cuts;
+      size /= 2.0;
+      pcout_ << e.what() << "\n  cut " << cuts
+             << ": every RVE back to its last converged state, retrying the rest of the step in "
+             << "sub-steps of 1/" << std::lround(1.0 / size) << std::endl;
+      pool_->rollback();
+      displacement_ = start;
+    }
+  }
+  return iterations;
+}
+
+// Testing only (subsection Faults): a step budget of 1 makes the solve fail
+// at its first check; the instance rebuilt by a rollback has the template's
+// budget again.
+template <int dim>
+void ExplicitSolver<dim>::inject_fault_if_due(bool first_attempt)
+{
+  const Faults& f = prm_.faults;
+  if (!pool_ || f.inject_ip < 0 || fault_injected_ || !first_attempt || step_ != f.inject_step)
+    return;
+  pool_->command(f.inject_ip, "fix_modify " + prm_.rve.setup("none").fix_id + " max_steps 1");
+  fault_injected_ = true;
+  pcout_ << "load step " << step_ << ": injected a fault into the RVE of IP " << f.inject_ip
+         << " ('Inject fault' of subsection Faults)" << std::endl;
 }
 
 // Before the expensive part: the directory exists and is writable, and the
@@ -93,6 +167,10 @@ void ExplicitSolver<dim>::prepare_output_directory()
       throw std::runtime_error("subsection Particle dumps: 'Points' lists " + std::to_string(p) +
                                ", but the mesh has " + std::to_string(history_.size()) +
                                " quadrature points (0.." + std::to_string(history_.size() - 1) + ")");
+  if (prm_.faults.inject_ip >= static_cast<int>(history_.size()))
+    throw std::runtime_error("subsection Faults: 'Inject fault' names IP " +
+                             std::to_string(prm_.faults.inject_ip) + ", but the mesh has " +
+                             std::to_string(history_.size()) + " quadrature points");
   if (!prm_.particle_dumps.points.empty() && prm_.material.type != "RVE")
     throw std::runtime_error("subsection Particle dumps: 'Points' needs 'Type' = RVE in "
                              "subsection Material");
@@ -100,7 +178,7 @@ void ExplicitSolver<dim>::prepare_output_directory()
   if (rank_ == 0)
   {
     std::error_code ec;
-    std::filesystem::create_directories(prm_.output_directory, ec);
+    std::filesystem::create_directories(prm_.output_directory + "/checkpoints", ec);
     if (!ec && !prm_.particle_dumps.points.empty())
       std::filesystem::create_directories(prm_.output_directory + "/particles", ec);
     const std::string probe = prm_.output_directory + "/.fe2dem-write-test";
@@ -121,14 +199,15 @@ unsigned int ExplicitSolver<dim>::total_steps() const
 }
 
 template <int dim>
-double ExplicitSolver<dim>::stage_fraction() const
+unsigned int ExplicitSolver<dim>::steps_in_stage(unsigned int stage) const
 {
-  const unsigned int n = stage_ == 1 ? prm_.loading.isotropic_steps : prm_.loading.steps;
-  return static_cast<double>(step_in_stage_) / n;
+  if (stage == 1)
+    return prm_.loading.boundary == "biaxial" ? prm_.loading.isotropic_steps : 0;
+  return prm_.loading.steps;
 }
 
 template <int dim>
-void ExplicitSolver<dim>::make_rve_pool()
+void ExplicitSolver<dim>::make_rve_pool(const std::string& checkpoint)
 {
   std::vector<fe2dem::QuadraturePoint> points;
   for (std::size_t p = 0; p < history_.size(); ++p)
@@ -136,9 +215,49 @@ void ExplicitSolver<dim>::make_rve_pool()
   const fe2dem::HistoryMode mode = prm_.material.history == "committed"
                                      ? fe2dem::HistoryMode::committed
                                      : fe2dem::HistoryMode::continuous;
-  pcout_ << "creating " << points.size() << " RVEs on "
-         << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) << " rank(s)" << std::endl;
-  pool_ = std::make_unique<fe2dem::RvePool>(MPI_COMM_WORLD, prm_.rve.setup("none"), mode, points);
+  const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+  if (n_ranks > points.size())
+    throw std::runtime_error("running on " + std::to_string(n_ranks) + " MPI ranks, but the mesh has only " +
+                             std::to_string(points.size()) + " quadrature points (RVEs): use at most "
+                             "mpirun -np " + std::to_string(points.size()));
+  if (checkpoint.empty())
+  {
+    pcout_ << "creating " << points.size() << " RVEs on " << n_ranks << " rank(s)" << std::endl;
+    pool_ = std::make_unique<fe2dem::RvePool>(MPI_COMM_WORLD, prm_.rve.setup("none"), mode, points);
+  }
+  else
+  {
+    pcout_ << "restoring " << points.size() << " RVEs on " << n_ranks << " rank(s)" << std::endl;
+    pool_ = std::make_unique<fe2dem::RvePool>(
+      MPI_COMM_WORLD, prm_.rve.setup("none"), mode, points,
+      [&](std::size_t k) { return read_rve_state(checkpoint, k); }, static_cast<int>(step_));
+  }
+}
+
+// summary.csv and history.h5: new, or as far as the checkpoint got.
+template <int dim>
+void ExplicitSolver<dim>::open_output_files(const std::string& checkpoint)
+{
+  if (rank_ != 0)
+    return;
+  const std::string summary = prm_.output_directory + "/summary.csv";
+  summary_.open(summary);
+  if (!summary_)
+    throw std::runtime_error("cannot write '" + summary + "': check 'Output directory'");
+  summary_ << "step,stage,time,axial_strain,stress_ratio_mean,stress_ratio_min,stress_ratio_max,"
+              "sigma11_mean,sigma22_mean,J_rel_mean,coordination_mean,anisotropy_mean,"
+              "macro_iterations,dem_steps,wall_s,top_force,affine_deviation\n"
+           << summary_rows_ << std::flush;
+  const std::string history = prm_.output_directory + "/history.h5";
+  if (checkpoint.empty())
+  {
+    std::vector<std::array<double, 2>> positions;
+    for (const PointHistory& h : history_)
+      positions.push_back({h.position[0], h.position[1]});
+    history_file_ = std::make_unique<HistoryWriter>(history, positions);
+  }
+  else
+    history_file_ = restore_history(checkpoint, history);
 }
 
 // End of stage 1: the height and J against which stage 2 is measured.
@@ -293,7 +412,7 @@ void ExplicitSolver<dim>::assemble_lumped_mass()
 template <int dim>
 void ExplicitSolver<dim>::apply_boundary_values()
 {
-  const double frac = stage_fraction();
+  const double frac = load_fraction_;
   boundary_values_.clear();
   Tensor<2, dim> F = unit_symmetric_tensor<dim>();
   F += frac * (affine_F_ - unit_symmetric_tensor<dim>());
@@ -404,7 +523,7 @@ template <int dim>
 void ExplicitSolver<dim>::assemble_external_force()
 {
   f_ext_ = 0.0;
-  const double p = (stage_ == 1 ? stage_fraction() : 1.0) * prm_.loading.pressure;
+  const double p = (stage_ == 1 ? load_fraction_ : 1.0) * prm_.loading.pressure;
   if (prm_.loading.boundary != "biaxial" || p == 0.0)
     return;
   for (const auto& cell : dof_handler_.active_cell_iterators())
@@ -443,7 +562,6 @@ unsigned int ExplicitSolver<dim>::relax_load_step()
 {
   const DynamicRelaxation& dr = prm_.relaxation;
   velocity_ = 0.0;
-  dem_steps_in_step_ = 0;
   apply_boundary_values();
   const double wave_speed = pool_ ? std::sqrt(prm_.material.stability_modulus / prm_.material.density)
                                   : material_.wave_speed(prm_.material.density);
@@ -452,6 +570,8 @@ unsigned int ExplicitSolver<dim>::relax_load_step()
   double e_max = 0.0;
   for (unsigned int it = 1; it <= dr.max_iterations; ++it)
   {
+    if (const int signal = stop_signal_received())
+      throw StopSignal{signal};
     assemble_internal_force();
     assemble_external_force();
     double num = 0.0, den = 0.0;

@@ -33,8 +33,16 @@ template <int dim>
 class ExplicitSolver
 {
 public:
-  explicit ExplicitSolver(const Parameters& parameters);
+  /// @param resume continue from the newest checkpoint in the output directory.
+  ExplicitSolver(const Parameters& parameters, bool resume = false);
   void run();
+
+  /**
+   * Makes SIGTERM and SIGUSR1 (sent by batch systems before the wall-time
+   * limit) end the run after writing a checkpoint of the last converged load
+   * step, with exit code 0. Call once, before run().
+   */
+  static void install_signal_handlers();
 
 private:
   /// Per quadrature point: what the material returned at the last f_int.
@@ -49,6 +57,14 @@ private:
     long servo_iterations = 0;
     dealii::Tensor<2, dim> F_last_step = dealii::unit_symmetric_tensor<dim>(); ///< F at the last converged step
   };
+  /// Everything of the macro state that a converged load step leaves behind.
+  struct ConvergedState
+  {
+    unsigned int stage = 1, step_in_stage = 0, step = 0;
+    double u_top_ic = 0.0, h_ic = 0.0;
+    dealii::Vector<double> displacement;
+    std::vector<PointHistory> history;
+  };
 
   void make_grid();
   void read_mesh_file();
@@ -61,21 +77,44 @@ private:
   void setup_system();
   void assemble_lumped_mass();
   void prepare_output_directory();
-  void make_rve_pool();
+  /// @param checkpoint restore the RVEs from this checkpoint (empty: build and relax them).
+  void make_rve_pool(const std::string& checkpoint);
   void apply_boundary_values();
   void update_stresses();
   void assemble_internal_force();
   void assemble_external_force();
+  /// One load step, cut into halves and retried after RVE failures (subsection Faults).
+  unsigned int solve_load_step();
   unsigned int relax_load_step();
+  void inject_fault_if_due(bool first_attempt);
   void finish_isotropic_stage();
   /// Mean vertical displacement of the top edge's nodes.
   double mean_top_displacement() const;
   void output_step(unsigned int iterations);
+  void open_output_files(const std::string& checkpoint);
+
+  // --- checkpoints (explicit_solver_checkpoint.cpp) -------------------------
+  void save_converged_state();
+  void restore_converged_state();
+  /// Checkpoint of the last converged load step (collective); returns its path.
+  std::string write_checkpoint();
+  /// Restores the state of the newest checkpoint; returns its path.
+  std::string resume_from_checkpoint();
+  std::vector<double> pack_ip_state() const;
+  void unpack_ip_state(const std::vector<double>& state, std::size_t width);
+  /// The stop signal that arrived on any rank, 0 if none (collective).
+  int stop_signal_received() const;
+  struct StopSignal
+  {
+    int signal;
+  };
   void write_particle_dumps() const;
 
   /// Where the loading is: stage 1 (isotropic) or 2 (axial), step in stage.
   unsigned int stage_ = 1, step_in_stage_ = 0, step_ = 0;
-  double stage_fraction() const;
+  /// Load factor of the current stage in [0, 1] at the end of the current (sub)step.
+  double load_fraction_ = 0.0;
+  unsigned int steps_in_stage(unsigned int stage) const;
   /// Load steps of the whole run (for the ETA of the progress line).
   unsigned int total_steps() const;
   double u_top_ic_ = 0.0, h_ic_ = 0.0; ///< top displacement and height after stage 1
@@ -101,6 +140,11 @@ private:
   dealii::TimerOutput timer_;
   std::ofstream summary_;
   std::vector<std::pair<double, std::string>> pvd_records_;
+  std::string summary_rows_; ///< rows of summary.csv so far (checkpointed)
   double t_start_ = 0.0;
+  bool resume_ = false;
+  bool fault_injected_ = false;
+  ConvergedState converged_;
+  std::string checkpoint_directory_;
 };
 } // namespace fe2dem::macro

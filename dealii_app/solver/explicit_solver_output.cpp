@@ -17,7 +17,7 @@ using namespace dealii;
 template <int dim>
 void ExplicitSolver<dim>::output_step(unsigned int iterations)
 {
-  const double frac = stage_fraction();
+  const double frac = load_fraction_;
   const unsigned int n_cells = triangulation_.n_active_cells();
   const unsigned int per_cell = history_.size() / n_cells;
   Vector<double> s11(n_cells), s22(n_cells), ratio(n_cells), j_rel(n_cells), coord(n_cells),
@@ -84,13 +84,15 @@ void ExplicitSolver<dim>::output_step(unsigned int iterations)
   if (rank_ != 0)
     return;
   history_file_->append(static_cast<int>(step_), axial, records);
-  summary_ << step_ << ',' << stage_ << ',' << step_ - 1 + frac << ',' << axial << ','
-           << r_sum / n << ',' << r_min << ',' << r_max << ',' << s11_sum / n << ','
-           << s22_sum / n << ',' << j_sum / n << ',' << coord_sum / n << ',' << aniso_sum / n
-           << ',' << iterations << ',' << dem_steps_in_step_ << ',' << MPI_Wtime() - t_start_ << ','
-           << top_force << ',' << (prm_.loading.boundary == "affine" && scale > 0.0 ? dev / scale : 0.0)
-           << '\n';
-  summary_.flush();
+  std::ostringstream row;
+  row << std::setprecision(12) << step_ << ',' << stage_ << ',' << step_ - 1 + frac << ',' << axial
+      << ',' << r_sum / n << ',' << r_min << ',' << r_max << ',' << s11_sum / n << ','
+      << s22_sum / n << ',' << j_sum / n << ',' << coord_sum / n << ',' << aniso_sum / n << ','
+      << iterations << ',' << dem_steps_in_step_ << ',' << MPI_Wtime() - t_start_ << ','
+      << top_force << ',' << (prm_.loading.boundary == "affine" && scale > 0.0 ? dev / scale : 0.0)
+      << '\n';
+  summary_rows_ += row.str();
+  summary_ << row.str() << std::flush;
   pcout_ << "stage " << stage_ << " step " << std::setw(3) << step_ << "  axial strain "
          << std::setw(9) << axial << "  stress ratio " << std::setw(9) << r_sum / n
          << "  DR iterations " << std::setw(6) << iterations << "  DEM steps " << dem_steps_in_step_

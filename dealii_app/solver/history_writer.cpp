@@ -69,6 +69,44 @@ HistoryWriter::HistoryWriter(const std::string& file,
     create(file_, name, H5T_NATIVE_LONG, n_ip_, 0);
 }
 
+namespace
+{
+const char* const datasets[] = {"ip_position", "step", "axial_strain", "F", "P", "sigma", "fabric",
+                                "coordination", "anisotropy", "servo_iterations", "dem_steps"};
+}
+
+HistoryWriter::HistoryWriter(const std::string& file, long long source) : name_(file)
+{
+  file_ = H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (file_ < 0)
+    throw std::runtime_error("cannot create '" + file + "': check 'Output directory'");
+  for (const char* name : datasets)
+    if (H5Ocopy(source, name, file_, name, H5P_DEFAULT, H5P_DEFAULT) < 0)
+      throw std::runtime_error("cannot copy '" + std::string(name) + "' into '" + file + "'");
+  hid_t set = H5Dopen2(file_, "ip_position", H5P_DEFAULT);
+  hid_t space = H5Dget_space(set);
+  hsize_t dims[2];
+  H5Sget_simple_extent_dims(space, dims, nullptr);
+  n_ip_ = dims[0];
+  H5Sclose(space);
+  H5Dclose(set);
+  set = H5Dopen2(file_, "step", H5P_DEFAULT);
+  space = H5Dget_space(set);
+  H5Sget_simple_extent_dims(space, dims, nullptr);
+  n_steps_ = dims[0];
+  H5Sclose(space);
+  H5Dclose(set);
+  H5Fflush(file_, H5F_SCOPE_GLOBAL);
+}
+
+void HistoryWriter::copy_to(long long destination) const
+{
+  for (const char* name : datasets)
+    if (H5Ocopy(file_, name, destination, name, H5P_DEFAULT, H5P_DEFAULT) < 0)
+      throw std::runtime_error("cannot copy '" + std::string(name) + "' of '" + name_ +
+                               "' into a checkpoint");
+}
+
 HistoryWriter::~HistoryWriter()
 {
   if (file_ >= 0)

@@ -29,12 +29,19 @@ class HistoryWriter
 public:
   /// Creates (truncates) @p file. @throws std::runtime_error naming the file.
   HistoryWriter(const std::string& file, const std::vector<std::array<double, 2>>& ip_position);
+  /**
+   * Creates (truncates) @p file as a copy of the datasets in HDF5 group
+   * @p source (written by copy_to(), e.g. in a checkpoint), to append to.
+   */
+  HistoryWriter(const std::string& file, long long source);
   ~HistoryWriter();
   HistoryWriter(const HistoryWriter&) = delete;
   HistoryWriter& operator=(const HistoryWriter&) = delete;
 
   /// Appends one converged load step; flushed to disk before returning.
   void append(int step, double axial_strain, const std::vector<IpRecord>& ips);
+  /// Copies every dataset, as written so far, into HDF5 group @p destination.
+  void copy_to(long long destination) const;
 
 private:
   long long file_ = -1;

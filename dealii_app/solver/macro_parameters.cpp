@@ -183,6 +183,91 @@ void ParticleDumps::parse_parameters(dealii::ParameterHandler& prm)
   prm.leave_subsection();
 }
 
+void Checkpointing::declare_parameters(dealii::ParameterHandler& prm)
+{
+  prm.enter_subsection("Checkpoint");
+  prm.declare_entry("Every", "5", Integer(0),
+                    "Write OUTPUT/checkpoints/checkpoint-NNNNNN.h5 every this many converged "
+                    "load steps (0: only on SIGTERM/SIGUSR1 and when a fault stops the run). "
+                    "'fe2dem FILE.prm --resume' continues from the newest one, on any number of "
+                    "ranks.");
+  prm.declare_entry("Keep", "2", Integer(1), "Number of newest checkpoints kept.");
+  prm.leave_subsection();
+}
+
+void Checkpointing::parse_parameters(dealii::ParameterHandler& prm)
+{
+  prm.enter_subsection("Checkpoint");
+  every = prm.get_integer("Every");
+  keep = prm.get_integer("Keep");
+  prm.leave_subsection();
+}
+
+void Faults::declare_parameters(dealii::ParameterHandler& prm)
+{
+  prm.enter_subsection("Faults");
+  prm.declare_entry("On RVE failure", "cut step", Selection("cut step|stop"),
+                    "When an RVE solve fails (step budget, escaped particle, blow-up): "
+                    "'cut step' returns every RVE and the mesh to the last converged state and "
+                    "retries the load step in halves (up to 'Max step cuts' times); 'stop' (or "
+                    "cuts exhausted) writes a checkpoint of the last converged load step and "
+                    "stops with the report.");
+  prm.declare_entry("Max step cuts", "3", Integer(0), "Halvings of one load step before stopping.");
+  prm.declare_entry("Inject fault", "", Anything(),
+                    "Testing only: 'IP STEP' gives the RVE of quadrature point IP a step budget "
+                    "of 1 at the first attempt of load step STEP, so that its solve fails. "
+                    "Empty: none.");
+  prm.leave_subsection();
+}
+
+void Faults::parse_parameters(dealii::ParameterHandler& prm)
+{
+  prm.enter_subsection("Faults");
+  cut_step = prm.get("On RVE failure") == "cut step";
+  max_cuts = prm.get_integer("Max step cuts");
+  const std::string inject = prm.get("Inject fault");
+  prm.leave_subsection();
+  inject_ip = -1;
+  if (!inject.empty())
+  {
+    std::istringstream s(inject);
+    long ip = -1, step = 0;
+    std::string extra;
+    if (!(s >> ip >> step) || (s >> extra) || ip < 0 || step < 1)
+      throw std::runtime_error("subsection Faults: 'Inject fault' = '" + inject +
+                               "' must be two integers 'IP STEP' (IP >= 0, STEP >= 1) or empty");
+    inject_ip = static_cast<int>(ip);
+    inject_step = static_cast<unsigned int>(step);
+  }
+}
+
+namespace
+{
+/// The entries of @p prm that define results, one 'subsection/entry = value' per line.
+std::string result_defining_entries(const dealii::ParameterHandler& prm)
+{
+  std::ostringstream all;
+  prm.print_parameters(all, dealii::ParameterHandler::ShortPRM);
+  std::istringstream in(all.str());
+  std::string line, section, out;
+  while (std::getline(in, line))
+  {
+    const auto start = line.find_first_not_of(' ');
+    if (start == std::string::npos)
+      continue;
+    line = line.substr(start);
+    if (line.rfind("subsection ", 0) == 0)
+      section = line.substr(11);
+    else if (line == "end")
+      section.clear();
+    else if (line.rfind("set ", 0) == 0 && section != "Checkpoint" && section != "Faults" &&
+             section != "Particle dumps" && line.rfind("set Output directory", 0) != 0)
+      out += (section.empty() ? "" : section + "/") + line.substr(4) + "\n";
+  }
+  return out;
+}
+} // namespace
+
 void Parameters::declare_parameters(dealii::ParameterHandler& prm)
 {
   prm.declare_entry("Output directory", "output", Anything(),
@@ -192,6 +277,8 @@ void Parameters::declare_parameters(dealii::ParameterHandler& prm)
   DynamicRelaxation::declare_parameters(prm);
   Loading::declare_parameters(prm);
   ParticleDumps::declare_parameters(prm);
+  Checkpointing::declare_parameters(prm);
+  Faults::declare_parameters(prm);
   rve_driver::RveParameters::declare_parameters(prm);
 }
 
@@ -206,6 +293,10 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
   relaxation.parse_parameters(prm);
   loading.parse_parameters(prm);
   particle_dumps.parse_parameters(prm);
+  checkpoint.parse_parameters(prm);
+  faults.parse_parameters(prm);
+  identity = result_defining_entries(prm);
+  this->file = file;
   rve.parse_parameters(prm, base.string());
 }
 } // namespace fe2dem::macro

@@ -69,6 +69,26 @@ struct ParticleDumps
   void parse_parameters(dealii::ParameterHandler& prm);
 };
 
+/// subsection Checkpoint: periodic checkpoints for --resume (checkpoint_file.h).
+struct Checkpointing
+{
+  unsigned int every; ///< load steps between checkpoints (0: only on signals and stops)
+  unsigned int keep;  ///< newest checkpoints kept
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm);
+};
+
+/// subsection Faults: what a failed RVE solve does to the run.
+struct Faults
+{
+  bool cut_step;           ///< cut the load step and retry (else stop with a checkpoint)
+  unsigned int max_cuts;   ///< halvings of one load step before stopping
+  int inject_ip = -1;      ///< test only: IP whose RVE gets a step budget of 1 ...
+  unsigned int inject_step = 0; ///< ... at the first attempt of this load step
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm);
+};
+
 struct Parameters
 {
   std::string output_directory;
@@ -77,6 +97,13 @@ struct Parameters
   DynamicRelaxation relaxation;
   Loading loading;
   ParticleDumps particle_dumps;
+  Checkpointing checkpoint;
+  Faults faults;
+  /// Every entry that defines the results (checked on --resume), as
+  /// 'subsection/entry = value' lines: all but Output directory and the
+  /// subsections Checkpoint, Faults and Particle dumps.
+  std::string identity;
+  std::string file; ///< the parameter file
   rve_driver::RveParameters rve; ///< subsection RVE (Material type = RVE)
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse(dealii::ParameterHandler& prm, const std::string& file);

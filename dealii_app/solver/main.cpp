@@ -20,13 +20,16 @@ int main(int argc, char** argv)
     using namespace fe2dem::macro;
     dealii::ParameterHandler prm;
     Parameters::declare_parameters(prm);
-    if (argc != 2 || std::strcmp(argv[1], "--help") == 0)
+    const bool resume = argc == 3 && std::strcmp(argv[2], "--resume") == 0;
+    if ((argc != 2 && !resume) || std::strcmp(argv[1], "--help") == 0)
     {
       std::cout << "Usage: fe2dem FILE.prm            run the macro problem of FILE.prm\n"
+                   "       fe2dem FILE.prm --resume   continue from the newest checkpoint\n"
                    "       fe2dem --print-parameters  every parameter, default and doc\n"
                    "Runs under mpirun -np N; results do not depend on N. Outputs in the\n"
-                   "'Output directory': summary.csv, history.h5, solution-NNNN.vtu, solution.pvd\n"
-                   "and particles/ (subsection Particle dumps).\n";
+                   "'Output directory': summary.csv, history.h5, solution-NNNN.vtu, solution.pvd,\n"
+                   "checkpoints/ and particles/ (subsection Particle dumps). SIGTERM or SIGUSR1\n"
+                   "writes a checkpoint of the last converged load step and stops (exit 0).\n";
       status = argc == 2 ? 0 : 2;
     }
     else if (std::strcmp(argv[1], "--print-parameters") == 0)
@@ -35,7 +38,8 @@ int main(int argc, char** argv)
     {
       Parameters parameters;
       parameters.parse(prm, argv[1]);
-      ExplicitSolver<2> solver(parameters);
+      ExplicitSolver<2>::install_signal_handlers();
+      ExplicitSolver<2> solver(parameters, resume);
       solver.run();
     }
   }

@@ -1,0 +1,211 @@
+// Checkpoints of a run (checkpoint_file.h) and what stops it cleanly:
+// SIGTERM / SIGUSR1 and RVE faults write a checkpoint of the last converged
+// load step; --resume continues from the newest one, on any number of ranks.
+#include "checkpoint_file.h"
+#include "explicit_solver.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <mpi.h>
+
+#include <csignal>
+#include <filesystem>
+#include <iomanip>
+#include <map>
+#include <sstream>
+
+namespace fe2dem::macro
+{
+using namespace dealii;
+
+namespace
+{
+volatile std::sig_atomic_t received_signal = 0;
+
+extern "C" void on_stop_signal(int signal)
+{
+  received_signal = signal;
+}
+
+/// 'key = value' lines (Parameters::identity) as a map.
+std::map<std::string, std::string> entries(const std::string& identity)
+{
+  std::map<std::string, std::string> m;
+  std::istringstream in(identity);
+  std::string line;
+  while (std::getline(in, line))
+  {
+    const auto eq = line.find('=');
+    auto trim = [](std::string s) {
+      s.erase(0, s.find_first_not_of(' '));
+      s.erase(s.find_last_not_of(' ') + 1);
+      return s;
+    };
+    m[trim(line.substr(0, eq))] = eq == std::string::npos ? "" : trim(line.substr(eq + 1));
+  }
+  return m;
+}
+
+/// The entries whose values differ, as "'A/B' = x in the checkpoint, y now".
+std::string differences(const std::string& saved, const std::string& now)
+{
+  const auto a = entries(saved), b = entries(now);
+  std::string out;
+  int n = 0;
+  for (const auto& [key, value] : a)
+  {
+    const auto it = b.find(key);
+    const std::string other = it == b.end() ? "(no such entry)" : it->second;
+    if (other != value && n++ < 5)
+      out += "\n  '" + key + "' = '" + value + "' in the checkpoint, '" + other + "' now";
+  }
+  for (const auto& [key, value] : b)
+    if (!a.count(key) && n++ < 5)
+      out += "\n  '" + key + "' = '" + value + "' now, absent in the checkpoint";
+  return out;
+}
+} // namespace
+
+template <int dim>
+void ExplicitSolver<dim>::install_signal_handlers()
+{
+  struct sigaction action = {};
+  action.sa_handler = on_stop_signal;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESTART;
+  sigaction(SIGTERM, &action, nullptr);
+  sigaction(SIGUSR1, &action, nullptr);
+}
+
+template <int dim>
+int ExplicitSolver<dim>::stop_signal_received() const
+{
+  return Utilities::MPI::max(static_cast<int>(received_signal), MPI_COMM_WORLD);
+}
+
+template <int dim>
+void ExplicitSolver<dim>::save_converged_state()
+{
+  converged_ = {stage_, step_in_stage_, step_, u_top_ic_, h_ic_, displacement_, history_};
+}
+
+// Per IP: F, P, fabric, F_last_step (dim x dim each), J_ic, coordination,
+// anisotropy, DEM steps, servo iterations.
+template <int dim>
+std::vector<double> ExplicitSolver<dim>::pack_ip_state() const
+{
+  std::vector<double> v;
+  for (const PointHistory& h : converged_.history)
+  {
+    for (const Tensor<2, dim>* t : {&h.F, &h.P, &h.fabric, &h.F_last_step})
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          v.push_back((*t)[i][j]);
+    for (double x : {h.J_ic, h.coordination, h.anisotropy, static_cast<double>(h.dem_steps),
+                     static_cast<double>(h.servo_iterations)})
+      v.push_back(x);
+  }
+  return v;
+}
+
+template <int dim>
+void ExplicitSolver<dim>::unpack_ip_state(const std::vector<double>& v, std::size_t width)
+{
+  if (width != 4 * dim * dim + 5 || v.size() != width * history_.size())
+    throw std::runtime_error("--resume: the checkpoint holds " + std::to_string(width ? v.size() / width : 0) +
+                             " quadrature points, the mesh has " + std::to_string(history_.size()));
+  auto x = v.begin();
+  for (PointHistory& h : history_)
+  {
+    for (Tensor<2, dim>* t : {&h.F, &h.P, &h.fabric, &h.F_last_step})
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          (*t)[i][j] = *x++;
+    h.J_ic = *x++;
+    h.coordination = *x++;
+    h.anisotropy = *x++;
+    h.dem_steps = static_cast<long>(*x++);
+    h.servo_iterations = static_cast<long>(*x++);
+  }
+}
+
+template <int dim>
+std::string ExplicitSolver<dim>::write_checkpoint()
+{
+  TimerOutput::Scope t(timer_, "checkpoint");
+  const double t0 = MPI_Wtime();
+  const std::string file = checkpoint_path(checkpoint_directory_, static_cast<int>(converged_.step));
+  const std::vector<std::vector<char>> states =
+    pool_ ? pool_->gather_committed_states(0) : std::vector<std::vector<char>>();
+  std::string problem;
+  if (rank_ == 0)
+    try
+    {
+      CheckpointData d;
+      d.step = static_cast<int>(converged_.step);
+      d.stage = static_cast<int>(converged_.stage);
+      d.step_in_stage = static_cast<int>(converged_.step_in_stage);
+      d.u_top_ic = converged_.u_top_ic;
+      d.h_ic = converged_.h_ic;
+      d.wall_seconds = MPI_Wtime() - t_start_;
+      d.displacement.assign(converged_.displacement.begin(), converged_.displacement.end());
+      d.ip_state = pack_ip_state();
+      d.ip_state_width = 4 * dim * dim + 5;
+      d.summary_rows = summary_rows_;
+      d.parameters = prm_.identity;
+      macro::write_checkpoint(file, d, states, history_file_.get());
+      prune_checkpoints(checkpoint_directory_, prm_.checkpoint.keep);
+    }
+    catch (const std::exception& e)
+    {
+      problem = e.what();
+    }
+  problem = Utilities::MPI::broadcast(MPI_COMM_WORLD, problem, 0);
+  if (!problem.empty())
+    throw std::runtime_error(problem);
+  pcout_ << "  checkpoint " << file << " (load step " << converged_.step << ", "
+         << std::setprecision(3) << MPI_Wtime() - t0 << " s)" << std::setprecision(6) << std::endl;
+  return file;
+}
+
+template <int dim>
+std::string ExplicitSolver<dim>::resume_from_checkpoint()
+{
+  const std::vector<std::string> files = list_checkpoints(checkpoint_directory_);
+  if (files.empty())
+    throw std::runtime_error("--resume: no complete checkpoint in '" + checkpoint_directory_ +
+                             "' (a run writes one every 'Every' load steps of subsection "
+                             "Checkpoint, on SIGTERM/SIGUSR1 and when an RVE fault stops it); "
+                             "start the run without --resume");
+  const std::string& file = files.back();
+  const CheckpointData d = read_checkpoint(file);
+  if (d.parameters != prm_.identity)
+    throw std::runtime_error("--resume: checkpoint '" + file + "' was written with other parameters than '" +
+                             prm_.file + "':" + differences(d.parameters, prm_.identity) +
+                             "\nResume with the parameter file of that run, or start a new run "
+                             "with another 'Output directory'");
+  if (d.displacement.size() != displacement_.size())
+    throw std::runtime_error("--resume: checkpoint '" + file + "' holds " +
+                             std::to_string(d.displacement.size()) + " degrees of freedom, the mesh has " +
+                             std::to_string(displacement_.size()) + " (was the mesh file changed?)");
+  stage_ = d.stage;
+  step_in_stage_ = d.step_in_stage;
+  step_ = d.step;
+  u_top_ic_ = d.u_top_ic;
+  h_ic_ = d.h_ic;
+  std::copy(d.displacement.begin(), d.displacement.end(), displacement_.begin());
+  unpack_ip_state(d.ip_state, d.ip_state_width);
+  summary_rows_ = d.summary_rows;
+  t_start_ = MPI_Wtime() - d.wall_seconds;
+  for (unsigned int s = 1; s <= step_; ++s)
+  {
+    std::ostringstream name;
+    name << "solution-" << std::setw(4) << std::setfill('0') << s << ".vtu";
+    pvd_records_.emplace_back(s, name.str());
+  }
+  pcout_ << "resuming from " << file << " after load step " << step_ << std::endl;
+  return file;
+}
+
+template class ExplicitSolver<2>;
+} // namespace fe2dem::macro

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# An injected RVE fault (subsection Faults, 'Inject fault' = IP 2 at load
+# step 3: a step budget of 1) must be reported with IP, position, load step
+# and reason, and handled as chosen:
+#   cut:  the load step is cut and retried; the run completes all rows;
+#   stop: the run stops with exit code 1 after a checkpoint of step 2, and
+#         --resume without the fault completes it identically to REFERENCE.
+# Usage: fault_injection.sh FE2DEM PRM WORKDIR REFERENCE_OUT cut|stop
+set -uo pipefail
+exe=$1 prm=$2 work=$3 reference=$4 mode=$5
+tests=$(cd "$(dirname "$0")" && pwd)
+reaction=$([[ $mode == cut ]] && echo "cut step" || echo stop)
+rm -rf "$work"; mkdir -p "$work"; cd "$work"
+sed 's#^set Output directory.*#set Output directory = out#' "$prm" > clean.prm
+{ cat clean.prm; printf '\nsubsection Faults\n  set On RVE failure = %s\n  set Inject fault = 2 3\nend\n' "$reaction"; } > case.prm
+"$exe" case.prm > run.log 2>&1; rc=$?
+grep -E "injected|RVE of IP|cut|stopped" run.log
+fail() { echo "FAIL: $*"; exit 1; }
+for needle in "injected a fault into the RVE of IP 2" "RVE of IP 2 at (" "load step 3" "not converged within max_steps"; do
+  grep -qF "$needle" run.log || fail "log lacks '$needle'"
+done
+rows=$(($(wc -l < out/summary.csv) - 1))
+if [[ $mode == cut ]]; then
+  [[ $rc -eq 0 ]] || fail "exit code $rc, expected 0"
+  grep -qF "cut 1: every RVE back to its last converged state" run.log || fail "no cut reported"
+  [[ $rows -eq $(($(wc -l < "$reference/summary.csv") - 1)) ]] || fail "$rows rows"
+  echo "ok: fault reported, load step 3 cut once, all $rows rows written"
+else
+  [[ $rc -ne 0 ]] || fail "exit code 0 after a fault with 'On RVE failure' = stop"
+  grep -qF "the run stopped after writing" run.log && grep -qF -- "--resume" run.log || fail "no stop message"
+  [[ $rows -eq 2 && -f out/checkpoints/checkpoint-000002.h5 ]] || fail "$rows rows / no checkpoint of step 2"
+  "$exe" clean.prm --resume > resumed.log 2>&1 || fail "resume: $(tail -n 3 resumed.log)"
+  python3 "$tests/compare_summaries.py" "$reference/summary.csv" out/summary.csv || exit 1
+  /usr/bin/python3 "$tests/compare_histories.py" "$reference/history.h5" out/history.h5 || exit 1
+  echo "ok: stopped with exit code $rc after step 2, resumed to the reference"
+fi

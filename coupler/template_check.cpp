@@ -120,7 +120,10 @@ void check_rve_template(const RveSetup& setup)
   const int line = command.empty() ? 0 : find_line(setup.template_file, command);
   std::ostringstream msg;
   msg << setup.template_file << ":" << (line > 0 ? std::to_string(line) : std::string("?"))
-      << ": the RVE template fails in LIGGGHTS: " << message;
+      << ": the RVE template fails in LIGGGHTS";
+  if (const auto data = setup.variables.find("rve_data"); data != setup.variables.end())
+    msg << " on the packing '" << data->second << "'";
+  msg << ": " << message;
   if (!command.empty())
     msg << " (command: " << command << ")";
   throw TemplateError(msg.str());

@@ -103,6 +103,7 @@ void FixRveServo::post_create()
     error->fix_error(FLERR, this, msg.c_str());
   }
 
+  check_reference_overlaps();
   n_particles_ = atom->nlocal;
   tag_to_dense_.assign(max_tag + 1, -1);
   for (int i = 0; i < atom->nlocal; ++i)
@@ -127,6 +128,26 @@ void FixRveServo::post_create()
     frame_local_[q] = local_index(frame_.particles[q].tag);
   frame_moment_.assign(nq, 0.0);
   create_contacts_compute();
+}
+
+void FixRveServo::check_reference_overlaps()
+{
+  double** x = atom->x;
+  const double* r = atom->radius;
+  for (int i = 0; i < atom->nlocal; ++i)
+    for (int j = i + 1; j < atom->nlocal; ++j)
+    {
+      const double d = std::hypot(x[i][0] - x[j][0], x[i][1] - x[j][1]);
+      const double rel = (r[i] + r[j] - d) / std::min(r[i], r[j]);
+      if (rel > max_overlap_)
+      {
+        std::ostringstream msg;
+        msg << "the packing as read has particles " << atom->tag[i] << " and " << atom->tag[j]
+            << " overlapping by " << rel << " of the smaller radius (keyword 'max_overlap' = "
+            << max_overlap_ << "): rebuild the packing (rve_templates/make_rve.sh) or check its data file";
+        error->fix_error(FLERR, this, msg.str().c_str());
+      }
+    }
 }
 
 void FixRveServo::create_contacts_compute()
@@ -347,6 +368,7 @@ const char* FixRveServo::status_name(Status s)
     case over_budget: return "not converged within max_steps";
     case escaped: return "particle escaped the frame";
     case blown_up: return "blow-up (non-finite values)";
+    case overlapped: return "overlap beyond max_overlap";
   }
   return "unknown";
 }

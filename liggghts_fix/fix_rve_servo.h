@@ -23,6 +23,9 @@
  *     start keep|reset         keep or reset frame fluctuations at a new F, default keep
  *     move_rate FRAC           largest frame move per step / R_min, default 1e-3
  *     on_failure error|flag    stop LIGGGHTS or only set the status, default error
+ *     max_overlap FRAC         largest contact overlap / smaller radius, in the
+ *                              packing as read and at every contact evaluation of a
+ *                              solve (beyond it: error, or status overlapped), default 0.5
  *     membrane yes|no          frame membrane: an inner particle whose centre comes
  *                              closer than its radius to the line between two
  *                              neighbouring frame particles is pushed back with the
@@ -76,7 +79,8 @@ public:
     converged = 1,
     over_budget = 2,     ///< max_steps reached without convergence
     escaped = 3,         ///< an inner particle left the frame
-    blown_up = 4         ///< non-finite position, velocity or force
+    blown_up = 4,        ///< non-finite position, velocity or force
+    overlapped = 5       ///< a contact overlaps beyond max_overlap
   };
 
   /// Everything a solve returns; updated at every convergence check.
@@ -162,6 +166,10 @@ private:
   double servo_residual() const;
   void apply_servo_correction();
   void fail(Status s, const std::string& reason);
+  /// The contact of contacts_ with the largest overlap, for messages.
+  std::string describe_largest_overlap() const;
+  /// Stops with an error naming the pair if the packing as read overlaps beyond max_overlap.
+  void check_reference_overlaps();
 
   // --- helpers ------------------------------------------------------------
   int local_index(int tag) const;
@@ -206,6 +214,7 @@ private:
   double move_rate_ = 1e-3;
   bool error_on_failure_ = true;
   bool membrane_on_ = true;
+  double max_overlap_ = 0.5;
 
   // frame
   fe2dem::FrameTopology frame_;

@@ -7,6 +7,7 @@
 #include "error.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -229,6 +230,33 @@ void FixRveServo::homogenise(double ekin)
                      : 0.0;
   r.packing_fraction = area_particles_ / (J * V0);
   r.residual = servo_residual();
+  if (r.contacts.max_overlap > max_overlap_)
+    fail(overlapped, describe_largest_overlap());
+}
+
+std::string FixRveServo::describe_largest_overlap() const
+{
+  double worst = -1.0;
+  const fe2dem::Contact* c = nullptr;
+  for (const fe2dem::Contact& k : contacts_)
+  {
+    const double d = std::hypot(k.xj[0] - k.xi[0], k.xj[1] - k.xi[1]);
+    const double rel = (k.ri + k.rj - d) / std::min(k.ri, k.rj);
+    if (rel > worst)
+      worst = rel, c = &k;
+  }
+  std::ostringstream msg;
+  msg << "largest overlap " << worst << " of the smaller radius (max_overlap = " << max_overlap_ << ")";
+  if (c)
+  {
+    const auto tag_of = [&](int dense) {
+      return static_cast<int>(std::find(tag_to_dense_.begin(), tag_to_dense_.end(), dense) -
+                              tag_to_dense_.begin());
+    };
+    msg << " between particles " << tag_of(c->i) << " and " << tag_of(c->j)
+        << ": the load is too large for the contact stiffness";
+  }
+  return msg.str();
 }
 
 // (R14): residuals of the anti-periodicity of frame forces and moments,

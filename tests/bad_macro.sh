@@ -3,15 +3,15 @@
 # code, a message with every NEEDLE, and no summary.csv row that could pass
 # for a result.
 # Usage: bad_macro.sh FE2DEM BASE.prm WORKDIR 'OVERRIDES' NEEDLE...
-#   OVERRIDES: parameter-file lines separated by ';', appended to BASE.prm
-#   (a later 'set' wins), e.g. 'subsection Geometry;set Mesh file = x.msh;end'.
+#   OVERRIDES: parameter-file lines separated by '~', appended to BASE.prm
+#   (a later 'set' wins), e.g. 'subsection Geometry~set Mesh file = x.msh~end'.
 #   '@TESTS@' in BASE.prm and OVERRIDES becomes this directory.
 #   LAUNCH (environment): launcher prefix, e.g. "mpiexec -np 3".
 set -uo pipefail
 exe=$1 base=$2 work=$3 overrides=$4; shift 4
 tests=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work"; mkdir -p "$work"
-{ cat "$base"; echo; tr ';' '\n' <<<"$overrides"; echo; } | sed "s#@TESTS@#$tests#g" > "$work/case.prm"
+{ cat "$base"; echo; tr '~' '\n' <<<"$overrides"; echo; } | sed "s#@TESTS@#$tests#g" > "$work/case.prm"
 out="$(cd "$work" && ${LAUNCH:-} "$exe" case.prm 2>&1)"
 rc=$?
 echo "$out" | tail -n 8

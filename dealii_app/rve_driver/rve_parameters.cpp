@@ -76,6 +76,9 @@ void RveParameters::declare_parameters(dealii::ParameterHandler& prm)
                     "two neighbouring frame particles is pushed back (normal stiffness), the "
                     "reaction going into the frame forces; keeps particles inside a frame "
                     "stretched at large strain. no: the frame of [LBS] alone.");
+  prm.declare_entry("Max overlap", "0.5", Double(0.0),
+                    "Largest contact overlap / smaller radius, > 0, in the packing as read and "
+                    "during solves; beyond it the packing is rejected or the solve fails.");
   prm.declare_entry("Check interval", "50", Integer(1),
                     "DEM steps between convergence checks (and C++ run chunk length).");
   prm.declare_entry("Step budget", "2000000", Integer(1),
@@ -104,14 +107,22 @@ void RveParameters::parse_parameters(dealii::ParameterHandler& prm, const std::s
   check_interval = prm.get_integer("Check interval");
   step_budget = prm.get_integer("Step budget");
   membrane = prm.get("Frame membrane");
+  max_overlap = prm.get_double("Max overlap");
   prm.leave_subsection();
   for (auto [name, v] : {std::pair{"Normal stiffness", kn}, {"Tangential stiffness", kt},
                          {"Time step", time_step}, {"Relaxation tolerance", relaxation_tolerance},
                          {"Servo tolerance", servo_tolerance}, {"Force gain", gain_a},
-                         {"Moment gain", gain_m}})
+                         {"Moment gain", gain_m}, {"Max overlap", max_overlap}})
     if (!(v > 0.0))
       throw std::runtime_error(std::string("subsection RVE: '") + name + "' = " + number(v) +
                                " must be > 0");
+}
+
+void RveParameters::check_files(const std::string& prm_file) const
+{
+  require_file(template_file, "subsection RVE: Template", prm_file);
+  require_file(packing + ".rve.data", "subsection RVE: Packing (.rve.data)", prm_file);
+  require_file(packing + ".vars", "subsection RVE: Packing (.vars)", prm_file);
 }
 
 RveSetup RveParameters::setup(const std::string& log_file) const
@@ -133,7 +144,8 @@ RveSetup RveParameters::setup(const std::string& log_file) const
                  {"check_every", std::to_string(check_interval)},
                  {"max_steps", std::to_string(step_budget)},
                  {"start", start},
-                 {"membrane", membrane}});
+                 {"membrane", membrane},
+                 {"max_overlap", number(max_overlap)}});
   return s;
 }
 
@@ -203,9 +215,7 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
   output_directory = resolve(base, prm.get("Output directory"));
   rve.parse_parameters(prm, base);
   path.parse_parameters(prm, base);
-  require_file(rve.template_file, "subsection RVE: Template", file);
-  require_file(rve.packing + ".rve.data", "subsection RVE: Packing (.rve.data)", file);
-  require_file(rve.packing + ".vars", "subsection RVE: Packing (.vars)", file);
+  rve.check_files(file);
   if (path.type == "table")
     require_file(path.table_file, "subsection Path: Table file", file);
 }

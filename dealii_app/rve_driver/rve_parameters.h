@@ -24,11 +24,14 @@ struct RveParameters
   double relaxation_tolerance, servo_tolerance, gain_a, gain_m;
   unsigned int check_interval, step_budget;
   std::string membrane; ///< yes | no: frame membrane of fix rve/servo
+  double max_overlap;   ///< largest overlap / smaller radius
 
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm, const std::string& base_dir);
   /// The RVE set-up these parameters describe.
   RveSetup setup(const std::string& log_file) const;
+  /// @throws std::runtime_error naming @p prm_file and the entry if Template or Packing files are missing.
+  void check_files(const std::string& prm_file) const;
 };
 
 /// subsection Path: the macro path the RVE follows.

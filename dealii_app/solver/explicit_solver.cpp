@@ -181,6 +181,10 @@ void ExplicitSolver<dim>::prepare_output_directory()
     std::filesystem::create_directories(prm_.output_directory + "/checkpoints", ec);
     if (!ec && !prm_.particle_dumps.points.empty())
       std::filesystem::create_directories(prm_.output_directory + "/particles", ec);
+    // A new run must not leave an older run's checkpoints for a later --resume.
+    if (!ec && !resume_)
+      for (const std::string& old : list_checkpoints(checkpoint_directory_))
+        std::filesystem::remove(old, ec);
     const std::string probe = prm_.output_directory + "/.fe2dem-write-test";
     if (ec || !std::ofstream(probe))
       problem = "cannot write to 'Output directory' = '" + prm_.output_directory +

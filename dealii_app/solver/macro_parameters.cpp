@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace fe2dem::macro
 {
@@ -91,8 +92,11 @@ void Material::parse_parameters(dealii::ParameterHandler& prm)
   stability_modulus = prm.get_double("Stability modulus");
   history = prm.get("History");
   prm.leave_subsection();
-  if (!(shear_modulus > 0.0 && density > 0.0))
-    throw std::runtime_error("subsection Material: 'Shear modulus' and 'Density' must be > 0");
+  for (auto [name, v] : {std::pair{"Shear modulus", shear_modulus}, {"Density", density},
+                         {"Stability modulus", stability_modulus}})
+    if (!(v > 0.0))
+      throw std::runtime_error(std::string("subsection Material: '") + name + "' = " +
+                               std::to_string(v) + " must be > 0");
 }
 
 void DynamicRelaxation::declare_parameters(dealii::ParameterHandler& prm)
@@ -117,9 +121,10 @@ void DynamicRelaxation::parse_parameters(dealii::ParameterHandler& prm)
   max_iterations = prm.get_integer("Max iterations");
   min_iterations = prm.get_integer("Min iterations");
   prm.leave_subsection();
-  if (!(safety_factor > 0.0 && kinetic_tolerance > 0.0))
-    throw std::runtime_error("subsection Dynamic relaxation: 'Safety factor' and 'Kinetic "
-                             "energy tolerance' must be > 0");
+  for (auto [name, v] : {std::pair{"Safety factor", safety_factor}, {"Kinetic energy tolerance", kinetic_tolerance}})
+    if (!(v > 0.0))
+      throw std::runtime_error(std::string("subsection Dynamic relaxation: '") + name + "' = " +
+                               std::to_string(v) + " must be > 0");
 }
 
 void Loading::declare_parameters(dealii::ParameterHandler& prm)
@@ -298,5 +303,7 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
   identity = result_defining_entries(prm);
   this->file = file;
   rve.parse_parameters(prm, base.string());
+  if (material.type == "RVE")
+    rve.check_files(file);
 }
 } // namespace fe2dem::macro

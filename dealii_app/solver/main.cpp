@@ -47,6 +47,7 @@ int main(int argc, char** argv)
   {
     std::cerr << "\nfe2dem: error in the parameter file:\n";
     e.print_info(std::cerr);
+    std::cerr << "(fe2dem --print-parameters lists every entry with its pattern and default)\n";
     status = 1;
   }
   catch (const fe2dem::CouplerError& e)

@@ -16,9 +16,15 @@ namespace
 struct Record
 {
   int index;
+  int skipped;    ///< 1: F within the skip tolerance of the last solve, result reused
   double seconds; ///< wall time of the solve: the cost used for placement
   LAMMPS_NS::FixRveServo::Result result;
 };
+
+double distance(const Eigen::Matrix2d& F, const Mat2& G)
+{
+  return (F - to_eigen(G)).norm();
+}
 } // namespace
 
 RvePool::RvePool(MPI_Comm comm, const RveSetup& setup, HistoryMode mode,
@@ -120,7 +126,14 @@ std::vector<RveResponse> RvePool::solve(const std::vector<Eigen::Matrix2d>& F)
   std::string reason;
   for (auto& [k, rve] : local_)
   {
-    Record r{static_cast<int>(k), 0.0, {}};
+    Record r{static_cast<int>(k), 0, 0.0, {}};
+    if (skip_tolerance_ > 0.0 && distance(F[k], rve->result().F) < skip_tolerance_)
+    {
+      r.skipped = 1;
+      r.result = rve->result();
+      mine.push_back(r);
+      continue;
+    }
     try
     {
       r.result = rve->solve(macro_to_rve(F[k]));
@@ -167,7 +180,12 @@ std::vector<RveResponse> RvePool::solve(const std::vector<Eigen::Matrix2d>& F)
   for (const Record& r : all)
   {
     out[r.index] = rve_to_macro(r.result);
-    cost_[r.index] = r.seconds;
+    if (r.skipped)
+    {
+      out[r.index].solved = false;
+      out[r.index].dem_steps = 0;
+    }
+    cost_[r.index] += r.seconds;
   }
   return out;
 }
@@ -256,6 +274,7 @@ int RvePool::rebalance()
   std::vector<double> current(n_ranks_, 0.0);
   for (std::size_t k = 0; k < points_.size(); ++k)
     current[owner_[k]] += cost_[k];
+  std::fill(cost_.begin(), cost_.end(), 0.0); // measure afresh until the next call
   if (*std::max_element(current.begin(), current.end()) <=
       1.05 * *std::max_element(load.begin(), load.end()))
     return 0;

@@ -77,12 +77,20 @@ public:
    *         any RVE fails (on all ranks).
    */
   std::vector<RveResponse> solve(const std::vector<Eigen::Matrix2d>& F);
+  /**
+   * Skip tolerance: an RVE whose F differs from the F of its last solve by
+   * less than @p tolerance (Frobenius norm) is not solved again; its last
+   * response is reused (RveResponse::solved = false). 0 (default): always solve.
+   */
+  void set_skip_tolerance(double tolerance) { skip_tolerance_ = tolerance; }
+
   /// Accepts the last solves as the converged load step.
   void commit();
   /// Returns every RVE to its last committed state.
   void rollback();
   /**
-   * Re-places RVEs by the cost (wall seconds) of their last solve, largest
+   * Re-places RVEs by their cost (wall seconds of their solves since the
+   * last rebalance), largest
    * first onto the least-loaded rank, and moves those whose rank changes,
    * unless that lowers the most loaded rank's cost by 5 % or less.
    * @pre called right after commit(). @return number of RVEs moved.
@@ -108,7 +116,7 @@ public:
   std::size_t size() const { return points_.size(); }
   std::size_t n_local() const { return local_.size(); }
   int load_step() const { return load_step_; }
-  /// Cost (wall seconds) of each RVE's last solve, identical on all ranks.
+  /// Cost (wall seconds of its solves since the last rebalance) of each RVE, identical on all ranks.
   const std::vector<double>& costs() const { return cost_; }
   /// Wall seconds this rank spent in RVE solves during the last solve().
   double last_local_seconds() const { return local_seconds_; }
@@ -128,5 +136,6 @@ private:
   int load_step_ = 0;
   bool committed_ = true;
   double local_seconds_ = 0.0;
+  double skip_tolerance_ = 0.0;
 };
 } // namespace fe2dem

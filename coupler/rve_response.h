@@ -24,6 +24,7 @@ struct RveResponse
   double packing_fraction = 0.0, residual = 0.0, ekin_epot = 0.0;
   int servo_iterations = 0;
   long dem_steps = 0;
+  bool solved = true; ///< false: reused from the RVE's last solve (RvePool skip tolerance)
 };
 
 /// F (Eigen) into the fix's row-major {F11, F12, F21, F22}.

@@ -97,7 +97,8 @@ void ExplicitSolver<dim>::run()
 template <int dim>
 unsigned int ExplicitSolver<dim>::solve_load_step()
 {
-  dem_steps_in_step_ = 0;
+  dem_steps_in_step_ = rve_solves_in_step_ = 0;
+  rve_seconds_in_step_ = 0.0;
   const double n = steps_in_stage(stage_);
   double done = 0.0, size = 1.0;
   unsigned int iterations = 0, cuts = 0;
@@ -112,7 +113,11 @@ unsigned int ExplicitSolver<dim>::solve_load_step()
       first_attempt = false;
       iterations += relax_load_step();
       if (pool_)
+      {
         pool_->commit();
+        if (prm_.parallel.rebalance)
+          pool_->rebalance();
+      }
       done += size;
       start = displacement_;
     }
@@ -236,6 +241,7 @@ void ExplicitSolver<dim>::make_rve_pool(const std::string& checkpoint)
       MPI_COMM_WORLD, prm_.rve.setup("none"), mode, points,
       [&](std::size_t k) { return read_rve_state(checkpoint, k); }, static_cast<int>(step_));
   }
+  pool_->set_skip_tolerance(prm_.material.skip_tolerance);
 }
 
 // summary.csv and history.h5: new, or as far as the checkpoint got.
@@ -250,7 +256,8 @@ void ExplicitSolver<dim>::open_output_files(const std::string& checkpoint)
     throw std::runtime_error("cannot write '" + summary + "': check 'Output directory'");
   summary_ << "step,stage,time,axial_strain,stress_ratio_mean,stress_ratio_min,stress_ratio_max,"
               "sigma11_mean,sigma22_mean,J_rel_mean,coordination_mean,anisotropy_mean,"
-              "macro_iterations,dem_steps,wall_s,top_force,affine_deviation\n"
+              "macro_iterations,dem_steps,wall_s,top_force,affine_deviation,rve_solves,"
+              "rve_rank_max_s,rve_rank_mean_s\n"
            << summary_rows_ << std::flush;
   const std::string history = prm_.output_directory + "/history.h5";
   if (checkpoint.empty())
@@ -496,7 +503,9 @@ void ExplicitSolver<dim>::update_stresses()
         h.fabric[i][j] = r[p].fabric(i, j);
     h.dem_steps = r[p].dem_steps;
     dem_steps_in_step_ += r[p].dem_steps;
+    rve_solves_in_step_ += r[p].solved;
   }
+  rve_seconds_in_step_ += pool_->last_local_seconds();
 }
 
 template <int dim>

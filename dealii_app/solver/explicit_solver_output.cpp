@@ -81,6 +81,8 @@ void ExplicitSolver<dim>::output_step(unsigned int iterations)
   }
   const double axial = stage_ == 2 ? (u_top_ic_ - mean_top_displacement()) / h_ic_ : 0.0;
   write_particle_dumps();
+  // Load balance: RVE seconds of the busiest and of the mean rank.
+  const Utilities::MPI::MinMaxAvg rve_seconds = Utilities::MPI::min_max_avg(rve_seconds_in_step_, MPI_COMM_WORLD);
   if (rank_ != 0)
     return;
   history_file_->append(static_cast<int>(step_), axial, records);
@@ -90,7 +92,7 @@ void ExplicitSolver<dim>::output_step(unsigned int iterations)
       << s22_sum / n << ',' << j_sum / n << ',' << coord_sum / n << ',' << aniso_sum / n << ','
       << iterations << ',' << dem_steps_in_step_ << ',' << MPI_Wtime() - t_start_ << ','
       << top_force << ',' << (prm_.loading.boundary == "affine" && scale > 0.0 ? dev / scale : 0.0)
-      << '\n';
+      << ',' << rve_solves_in_step_ << ',' << rve_seconds.max << ',' << rve_seconds.avg << '\n';
   summary_rows_ += row.str();
   summary_ << row.str() << std::flush;
   pcout_ << "stage " << stage_ << " step " << std::setw(3) << step_ << "  axial strain "

@@ -73,6 +73,11 @@ void Material::declare_parameters(dealii::ParameterHandler& prm)
   prm.declare_entry("History", "continuous", Selection("committed|continuous"),
                     "RVE: every trial solve starts from the last converged load step "
                     "(committed, [LBS]) or continues from the previous iteration (continuous).");
+  prm.declare_entry("Skip tolerance", "0", Double(0.0),
+                    "RVE: an RVE whose F differs from the F of its last solve by less than this "
+                    "(Frobenius norm) is not solved again in a dynamic-relaxation iteration; its "
+                    "last response is reused. 0: solve every RVE every iteration (the paper's "
+                    "scheme). An acceleration: see benchmarks/perf for its effect.");
   prm.declare_entry("Shear modulus", "1e6", Double(0.0), "mu, > 0 [force/area; 2D: force/length].");
   prm.declare_entry("Lame lambda", "1e6", Double(0.0), "lambda, >= 0.");
   prm.declare_entry("Density", "1", Double(0.0),
@@ -91,6 +96,7 @@ void Material::parse_parameters(dealii::ParameterHandler& prm)
   density = prm.get_double("Density");
   stability_modulus = prm.get_double("Stability modulus");
   history = prm.get("History");
+  skip_tolerance = prm.get_double("Skip tolerance");
   prm.leave_subsection();
   for (auto [name, v] : {std::pair{"Shear modulus", shear_modulus}, {"Density", density},
                          {"Stability modulus", stability_modulus}})
@@ -188,6 +194,23 @@ void ParticleDumps::parse_parameters(dealii::ParameterHandler& prm)
   prm.leave_subsection();
 }
 
+void Parallel::declare_parameters(dealii::ParameterHandler& prm)
+{
+  prm.enter_subsection("Parallel");
+  prm.declare_entry("Rebalance", "true", dealii::Patterns::Bool(),
+                    "After every converged load step, re-place the RVEs on the ranks by their "
+                    "measured solve time (largest first onto the least loaded rank; moves only "
+                    "if the busiest rank gains more than 5 %). Results do not depend on it.");
+  prm.leave_subsection();
+}
+
+void Parallel::parse_parameters(dealii::ParameterHandler& prm)
+{
+  prm.enter_subsection("Parallel");
+  rebalance = prm.get_bool("Rebalance");
+  prm.leave_subsection();
+}
+
 void Checkpointing::declare_parameters(dealii::ParameterHandler& prm)
 {
   prm.enter_subsection("Checkpoint");
@@ -265,7 +288,7 @@ std::string result_defining_entries(const dealii::ParameterHandler& prm)
       section = line.substr(11);
     else if (line == "end")
       section.clear();
-    else if (line.rfind("set ", 0) == 0 && section != "Checkpoint" && section != "Faults" &&
+    else if (line.rfind("set ", 0) == 0 && section != "Checkpoint" && section != "Faults" && section != "Parallel" &&
              section != "Particle dumps" && line.rfind("set Output directory", 0) != 0)
       out += (section.empty() ? "" : section + "/") + line.substr(4) + "\n";
   }
@@ -283,6 +306,7 @@ void Parameters::declare_parameters(dealii::ParameterHandler& prm)
   Loading::declare_parameters(prm);
   ParticleDumps::declare_parameters(prm);
   Checkpointing::declare_parameters(prm);
+  Parallel::declare_parameters(prm);
   Faults::declare_parameters(prm);
   rve_driver::RveParameters::declare_parameters(prm);
 }
@@ -299,6 +323,7 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
   loading.parse_parameters(prm);
   particle_dumps.parse_parameters(prm);
   checkpoint.parse_parameters(prm);
+  parallel.parse_parameters(prm);
   faults.parse_parameters(prm);
   identity = result_defining_entries(prm);
   this->file = file;

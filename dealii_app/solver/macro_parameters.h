@@ -34,6 +34,7 @@ struct Material
   double shear_modulus, lame_lambda, density;
   double stability_modulus; ///< RVE: upper estimate of the tangent modulus (stable step)
   std::string history;      ///< RVE: committed | continuous
+  double skip_tolerance;    ///< RVE: reuse the last response if |F - F_last| below it (0: off)
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm);
 };
@@ -69,6 +70,14 @@ struct ParticleDumps
   void parse_parameters(dealii::ParameterHandler& prm);
 };
 
+/// subsection Parallel: placement of the RVEs on the ranks (never changes results).
+struct Parallel
+{
+  bool rebalance; ///< re-place RVEs by measured cost after every converged load step
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm);
+};
+
 /// subsection Checkpoint: periodic checkpoints for --resume (checkpoint_file.h).
 struct Checkpointing
 {
@@ -98,10 +107,11 @@ struct Parameters
   Loading loading;
   ParticleDumps particle_dumps;
   Checkpointing checkpoint;
+  Parallel parallel;
   Faults faults;
   /// Every entry that defines the results (checked on --resume), as
   /// 'subsection/entry = value' lines: all but Output directory and the
-  /// subsections Checkpoint, Faults and Particle dumps.
+  /// subsections Checkpoint, Faults, Parallel and Particle dumps.
   std::string identity;
   std::string file; ///< the parameter file
   rve_driver::RveParameters rve; ///< subsection RVE (Material type = RVE)

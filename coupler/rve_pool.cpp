@@ -29,31 +29,31 @@ double distance(const Eigen::Matrix2d& F, const Mat2& G)
 
 RvePool::RvePool(MPI_Comm comm, const RveSetup& setup, HistoryMode mode,
                  const std::vector<QuadraturePoint>& points)
-  : comm_(comm), setup_(setup), mode_(mode), points_(points), owner_(points.size()),
-    cost_(points.size(), 0.0)
+  : RvePool(comm, setup, mode, points, 0,
+            [&](std::size_t) { return std::make_unique<ServoRve>(setup, mode); })
 {
-  MPI_Comm_rank(comm_, &rank_);
-  MPI_Comm_size(comm_, &n_ranks_);
-  check_template();
-  place_in_blocks();
-  for (std::size_t k = 0; k < points_.size(); ++k)
-    if (owner_[k] == rank_)
-      local_[k] = std::make_unique<ServoRve>(setup_, mode_);
 }
 
 RvePool::RvePool(MPI_Comm comm, const RveSetup& setup, HistoryMode mode,
                  const std::vector<QuadraturePoint>& points, const StateSource& state_of,
                  int load_step)
+  : RvePool(comm, setup, mode, points, load_step,
+            [&](std::size_t k) { return ServoRve::restore(setup, state_of(k), mode); })
+{
+}
+
+RvePool::RvePool(MPI_Comm comm, const RveSetup& setup, HistoryMode mode,
+                 const std::vector<QuadraturePoint>& points, int load_step, const Factory& make)
   : comm_(comm), setup_(setup), mode_(mode), points_(points), owner_(points.size()),
     cost_(points.size(), 0.0), load_step_(load_step)
 {
   MPI_Comm_rank(comm_, &rank_);
   MPI_Comm_size(comm_, &n_ranks_);
-  check_template();
+  check_template(); // before any instance exists
   place_in_blocks();
   for (std::size_t k = 0; k < points_.size(); ++k)
     if (owner_[k] == rank_)
-      local_[k] = ServoRve::restore(setup_, state_of(k), mode_);
+      local_[k] = make(k);
 }
 
 // The template is checked once, in a child process, before any instance

@@ -122,6 +122,10 @@ public:
   double last_local_seconds() const { return local_seconds_; }
 
 private:
+  using Factory = std::function<std::unique_ptr<ServoRve>(std::size_t k)>;
+  /// Shared by the public constructors: @p make builds this rank's RVE k.
+  RvePool(MPI_Comm comm, const RveSetup& setup, HistoryMode mode,
+          const std::vector<QuadraturePoint>& points, int load_step, const Factory& make);
   void require_committed(const char* what) const;
   void check_template() const;
   void place_in_blocks();

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Speed-up and accuracy cost of each acceleration on the multiscale [LBS]
+# biaxial test: runs dealii_app/examples/biaxial_MESH.prm on 2 ranks with
+# each setting below, keeps results/accel_MESH_SETTING/summary.csv and
+# prints `name value unit` lines (wall time, DEM steps, RVE solves, macro
+# iterations, peak stress ratio, axial strain at peak, largest difference of
+# the stress-ratio curve from the strict scheme relative to its peak).
+# Usage: benchmarks/perf/accelerations.sh [BUILD_DIR] MESH [SETTING...]
+#   settings: strict (committed history: every trial from the last
+#   converged state, [LBS]), warm (continuous history: warm starts, [LSYF]),
+#   skip1e-5, skip1e-4 (warm + skip tolerance). Default: all four.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+build="$(realpath -m "${1:-$root/build}")"
+mesh="${2:-1x1}"
+shift 2 || true
+settings=("${@:-strict warm skip1e-5 skip1e-4}")
+read -r -a settings <<<"${settings[*]}"
+source "$root/benchmarks/common.sh"
+overrides() {
+  case $1 in
+    strict) printf 'subsection Material\n  set History = committed\n  set Skip tolerance = 0\nend\n' ;;
+    warm) printf 'subsection Material\n  set History = continuous\n  set Skip tolerance = 0\nend\n' ;;
+    skip*) printf 'subsection Material\n  set History = continuous\n  set Skip tolerance = %s\nend\n' "${1#skip}" ;;
+    *) echo "unknown setting '$1'" >&2; exit 2 ;;
+  esac
+}
+mkdir -p "$here/results"
+for s in "${settings[@]}"; do
+  work="$(mktemp -d)"
+  { sed "s#^set Output directory.*#set Output directory = $work/out#; s#\.\./\.\./rve_templates#$root/rve_templates#" \
+      "$root/dealii_app/examples/biaxial_$mesh.prm"; overrides "$s"; } > "$work/case.prm"
+  start=$(date +%s.%N)
+  status=completed
+  mpirun --allow-run-as-root --oversubscribe -np 2 "$build/dealii_app/solver/fe2dem" "$work/case.prm" \
+    > "$here/results/accel_${mesh}_$s.log" 2>&1 || status=stopped
+  wall=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN {printf "%.1f", e - s}')
+  mkdir -p "$here/results/accel_${mesh}_$s"
+  cp "$work/out/summary.csv" "$here/results/accel_${mesh}_$s/"
+  rm -rf "$work"
+  line=$(/usr/bin/python3 "$here/compare_curves.py" "$here/results/accel_${mesh}_$s/summary.csv" \
+           "$here/results/accel_${mesh}_strict/summary.csv")
+  echo "${mesh}_${s}_status $status -"
+  echo "${mesh}_${s}_wall $wall s"
+  echo "$line" | sed "s/^/${mesh}_${s}_/"
+  append_result "$here/results.csv" "benchmark,mesh,setting,status,wall_s,$(echo "$line" | awk '{print $1}' | paste -sd,)" \
+    "accelerations,$mesh,$s,$status,$wall,$(echo "$line" | awk '{print $2}' | paste -sd,)"
+done

@@ -8,14 +8,16 @@
 # Usage: benchmarks/perf/accelerations.sh [BUILD_DIR] MESH [SETTING...]
 #   settings: strict (committed history: every trial from the last
 #   converged state, [LBS]), warm (continuous history: warm starts, [LSYF]),
-#   skip1e-5, skip1e-4 (warm + skip tolerance). Default: all four.
+#   skip1e-5, skip1e-4 (warm + skip tolerance), check10 (warm + RVE
+#   convergence checks every 10 DEM steps instead of 50), fast (check10 +
+#   skip1e-5). Default: all six.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 build="$(realpath -m "${1:-$root/build}")"
 mesh="${2:-1x1}"
 shift 2 || true
-settings=("${@:-strict warm skip1e-5 skip1e-4}")
+settings=("${@:-strict warm skip1e-5 skip1e-4 check10 fast}")
 read -r -a settings <<<"${settings[*]}"
 source "$root/benchmarks/common.sh"
 overrides() {
@@ -23,6 +25,8 @@ overrides() {
     strict) printf 'subsection Material\n  set History = committed\n  set Skip tolerance = 0\nend\n' ;;
     warm) printf 'subsection Material\n  set History = continuous\n  set Skip tolerance = 0\nend\n' ;;
     skip*) printf 'subsection Material\n  set History = continuous\n  set Skip tolerance = %s\nend\n' "${1#skip}" ;;
+    check10) printf 'subsection Material\n  set History = continuous\nend\nsubsection RVE\n  set Check interval = 10\nend\n' ;;
+    fast) overrides check10; printf 'subsection Material\n  set Skip tolerance = 1e-5\nend\n' ;;
     *) echo "unknown setting '$1'" >&2; exit 2 ;;
   esac
 }

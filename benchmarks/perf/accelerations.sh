@@ -48,6 +48,6 @@ for s in "${settings[@]}"; do
   echo "${mesh}_${s}_status $status -"
   echo "${mesh}_${s}_wall $wall s"
   echo "$line" | sed "s/^/${mesh}_${s}_/"
-  append_result "$here/results.csv" "benchmark,mesh,setting,status,wall_s,$(echo "$line" | awk '{print $1}' | paste -sd,)" \
+  append_result "$here/results_accelerations.csv" "benchmark,mesh,setting,status,wall_s,$(echo "$line" | awk '{print $1}' | paste -sd,)" \
     "accelerations,$mesh,$s,$status,$wall,$(echo "$line" | awk '{print $2}' | paste -sd,)"
 done

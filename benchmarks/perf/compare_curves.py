@@ -5,7 +5,8 @@ Usage: compare_curves.py SUMMARY [REFERENCE]
 Prints `name value unit` lines: dem_steps, rve_solves, macro_iterations,
 peak_stress_ratio, axial_strain_at_peak, rows; with REFERENCE (if it
 exists) also peak_difference (relative) and curve_difference (largest
-|stress ratio - reference| over common load steps / reference peak).
+|stress ratio - reference| over common load steps / reference peak;
+prepeak_curve_difference: the same up to 5 % axial strain).
 """
 import csv
 import os
@@ -30,5 +31,11 @@ if len(sys.argv) > 2 and os.path.exists(sys.argv[2]):
     ref, ref_peak, _ = load(sys.argv[2])
     diff = max(abs(float(a["stress_ratio_mean"]) - float(b["stress_ratio_mean"]))
                for a, b in zip(rows, ref))
+    pre = max(abs(float(a["stress_ratio_mean"]) - float(b["stress_ratio_mean"]))
+              for a, b in zip(rows, ref) if float(b["axial_strain"]) <= 0.05)
     print(f"peak_difference {abs(peak - ref_peak) / ref_peak:.4f} 1")
     print(f"curve_difference {diff / ref_peak:.4f} 1")
+    print(f"prepeak_curve_difference {pre / ref_peak:.4f} 1")
+else:  # no reference run: same columns, no values
+    for name in ("peak_difference", "curve_difference", "prepeak_curve_difference"):
+        print(f"{name} nan 1")

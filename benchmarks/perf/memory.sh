@@ -18,4 +18,4 @@ for n in 4 128; do
   echo "memory_${n}_rves_process_peak $peak bytes"
   row="$row,$per,$peak"
 done
-append_result "$here/results.csv" "benchmark,per_rve_4,peak_4,per_rve_128,peak_128" "memory$row"
+append_result "$here/results_memory.csv" "benchmark,per_rve_4,peak_4,per_rve_128,peak_128" "memory$row"

@@ -42,6 +42,9 @@ void ExplicitSolver<dim>::run()
           output_step(iterations);
         }
         save_converged_state();
+        // After the output: a moved RVE has no contact list until its next solve.
+        if (pool_ && prm_.parallel.rebalance)
+          pool_->rebalance();
         if (prm_.checkpoint.every > 0 && step_ % prm_.checkpoint.every == 0)
           write_checkpoint();
       }
@@ -84,11 +87,7 @@ unsigned int ExplicitSolver<dim>::solve_load_step()
       first_attempt = false;
       iterations += relax_load_step();
       if (pool_)
-      {
         pool_->commit();
-        if (prm_.parallel.rebalance)
-          pool_->rebalance();
-      }
       done += size;
       start = displacement_;
     }

@@ -77,7 +77,9 @@ void Material::declare_parameters(dealii::ParameterHandler& prm)
                     "RVE: an RVE whose F differs from the F of its last solve by less than this "
                     "(Frobenius norm) is not solved again in a dynamic-relaxation iteration; its "
                     "last response is reused. 0: solve every RVE every iteration (the paper's "
-                    "scheme). An acceleration: see benchmarks/perf for its effect.");
+                    "scheme). An acceleration (benchmarks/perf/README.md): on the 1x1 test it saves "
+                    "40 % of the solves, but on the 2x4 mesh it kept dynamic relaxation from "
+                    "converging; use with care.");
   prm.declare_entry("Shear modulus", "1e6", Double(0.0), "mu, > 0 [force/area; 2D: force/length].");
   prm.declare_entry("Lame lambda", "1e6", Double(0.0), "lambda, >= 0.");
   prm.declare_entry("Density", "1", Double(0.0),

@@ -65,9 +65,11 @@ void ExplicitSolver<dim>::run()
 }
 
 // A load step in sub-steps: one, unless an RVE fails; then every RVE and
-// the mesh return to the last converged (sub)step and the rest is retried
-// in halves. Fractions are dyadic, so sums are exact and an uncut step ends
-// exactly on step_in_stage / n.
+// the mesh return to the start of the step (the last commit) and the whole
+// step is retried in twice as many sub-steps. RVEs are committed only when
+// the whole step has converged, so a checkpoint written on a stop holds the
+// RVEs and the mesh of the same load step. Fractions are dyadic, so sums are
+// exact and an uncut step ends exactly on step_in_stage / n.
 template <int dim>
 unsigned int ExplicitSolver<dim>::solve_load_step()
 {
@@ -77,7 +79,7 @@ unsigned int ExplicitSolver<dim>::solve_load_step()
   double done = 0.0, size = 1.0;
   unsigned int iterations = 0, cuts = 0;
   bool first_attempt = true;
-  Vector<double> start = displacement_;
+  const Vector<double> start = displacement_;
   while (done < 1.0)
   {
     load_fraction_ = (static_cast<double>(step_in_stage_ - 1) + (done + size)) / n;
@@ -86,10 +88,7 @@ unsigned int ExplicitSolver<dim>::solve_load_step()
       inject_fault_if_due(first_attempt);
       first_attempt = false;
       iterations += relax_load_step();
-      if (pool_)
-        pool_->commit();
       done += size;
-      start = displacement_;
     }
     catch (const CouplerError& e)
     {
@@ -107,13 +106,16 @@ unsigned int ExplicitSolver<dim>::solve_load_step()
       }
       ++cuts;
       size /= 2.0;
+      done = 0.0;
       pcout_ << e.what() << "\n  cut " << cuts
-             << ": every RVE back to its last converged state, retrying the rest of the step in "
-             << "sub-steps of 1/" << std::lround(1.0 / size) << std::endl;
+             << ": every RVE back to the start of the load step, retrying it in "
+             << std::lround(1.0 / size) << " sub-steps" << std::endl;
       pool_->rollback();
       displacement_ = start;
     }
   }
+  if (pool_)
+    pool_->commit();
   return iterations;
 }
 

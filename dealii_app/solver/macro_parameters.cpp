@@ -238,8 +238,8 @@ void Faults::declare_parameters(dealii::ParameterHandler& prm)
   prm.enter_subsection("Faults");
   prm.declare_entry("On RVE failure", "cut step", Selection("cut step|stop"),
                     "When an RVE solve fails (step budget, escaped particle, blow-up): "
-                    "'cut step' returns every RVE and the mesh to the last converged state and "
-                    "retries the load step in halves (up to 'Max step cuts' times); 'stop' (or "
+                    "'cut step' returns every RVE and the mesh to the start of the load step and "
+                    "retries it in 2, 4, ... sub-steps (up to 'Max step cuts' times); 'stop' (or "
                     "cuts exhausted) writes a checkpoint of the last converged load step and "
                     "stops with the report.");
   prm.declare_entry("Max step cuts", "3", Integer(0), "Halvings of one load step before stopping.");

@@ -7,6 +7,7 @@
 #include <climits>
 #include <numeric>
 #include <sstream>
+#include <utility>
 
 namespace fe2dem
 {
@@ -87,28 +88,39 @@ void RvePool::place_in_blocks()
     owner_[k] = static_cast<int>(k * n_ranks_ / std::max<std::size_t>(n, 1));
 }
 
+std::vector<char> RvePool::send_bytes(int from, int to, std::vector<char> bytes) const
+{
+  if (from == to)
+    return bytes;
+  if (rank_ == from)
+  {
+    const long n = static_cast<long>(bytes.size());
+    MPI_Send(&n, 1, MPI_LONG, to, 0, comm_);
+    MPI_Send(bytes.data(), static_cast<int>(n), MPI_CHAR, to, 1, comm_);
+    return {};
+  }
+  if (rank_ == to)
+  {
+    long n = 0;
+    MPI_Recv(&n, 1, MPI_LONG, from, 0, comm_, MPI_STATUS_IGNORE);
+    bytes.resize(n);
+    MPI_Recv(bytes.data(), static_cast<int>(n), MPI_CHAR, from, 1, comm_, MPI_STATUS_IGNORE);
+  }
+  return bytes;
+}
+
 std::vector<std::vector<char>> RvePool::gather_committed_states(int root) const
 {
   std::vector<std::vector<char>> states(rank_ == root ? points_.size() : 0);
   for (std::size_t k = 0; k < points_.size(); ++k)
   {
     const int from = owner_[k];
-    if (from == root && rank_ == root)
-      states[k] = local_.at(k)->committed_state();
-    else if (rank_ == from)
-    {
-      const std::vector<char> state = local_.at(k)->committed_state();
-      const long n = static_cast<long>(state.size());
-      MPI_Send(&n, 1, MPI_LONG, root, 2, comm_);
-      MPI_Send(state.data(), static_cast<int>(n), MPI_CHAR, root, 3, comm_);
-    }
-    else if (rank_ == root)
-    {
-      long n = 0;
-      MPI_Recv(&n, 1, MPI_LONG, from, 2, comm_, MPI_STATUS_IGNORE);
-      states[k].resize(n);
-      MPI_Recv(states[k].data(), static_cast<int>(n), MPI_CHAR, from, 3, comm_, MPI_STATUS_IGNORE);
-    }
+    if (rank_ != from && rank_ != root)
+      continue;
+    std::vector<char> state = send_bytes(from, root, rank_ == from ? local_.at(k)->committed_state()
+                                                                    : std::vector<char>());
+    if (rank_ == root)
+      states[k] = std::move(state);
   }
   return states;
 }
@@ -230,21 +242,14 @@ void RvePool::move(std::size_t k, int to)
   const int from = owner_[k];
   if (from == to)
     return;
-  if (rank_ == from)
+  if (rank_ == from || rank_ == to)
   {
-    const std::vector<char> state = local_.at(k)->serialise();
-    const long n = static_cast<long>(state.size());
-    MPI_Send(&n, 1, MPI_LONG, to, 0, comm_);
-    MPI_Send(state.data(), static_cast<int>(n), MPI_CHAR, to, 1, comm_);
-    local_.erase(k);
-  }
-  else if (rank_ == to)
-  {
-    long n = 0;
-    MPI_Recv(&n, 1, MPI_LONG, from, 0, comm_, MPI_STATUS_IGNORE);
-    std::vector<char> state(n);
-    MPI_Recv(state.data(), static_cast<int>(n), MPI_CHAR, from, 1, comm_, MPI_STATUS_IGNORE);
-    local_[k] = ServoRve::restore(setup_, state, mode_);
+    const std::vector<char> state =
+      send_bytes(from, to, rank_ == from ? local_.at(k)->serialise() : std::vector<char>());
+    if (rank_ == from)
+      local_.erase(k);
+    else
+      local_[k] = ServoRve::restore(setup_, state, mode_);
   }
   owner_[k] = to;
 }

@@ -128,6 +128,8 @@ private:
           const std::vector<QuadraturePoint>& points, int load_step, const Factory& make);
   void require_committed(const char* what) const;
   void check_template() const;
+  /// Point-to-point: @p bytes (given on rank @p from) arrive on rank @p to; empty elsewhere.
+  std::vector<char> send_bytes(int from, int to, std::vector<char> bytes) const;
   void place_in_blocks();
   MPI_Comm comm_;
   int rank_ = 0, n_ranks_ = 1;

@@ -109,6 +109,8 @@ private:
     int signal;
   };
   void write_particle_dumps() const;
+  /// solution-NNNN.vtu of load step @p step (also rebuilt on --resume).
+  static std::string vtu_name(unsigned int step);
 
   /// Where the loading is: stage 1 (isotropic) or 2 (axial), step in stage.
   unsigned int stage_ = 1, step_in_stage_ = 0, step_ = 0;

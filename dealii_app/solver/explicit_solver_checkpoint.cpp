@@ -198,11 +198,7 @@ std::string ExplicitSolver<dim>::resume_from_checkpoint()
   summary_rows_ = d.summary_rows;
   t_start_ = MPI_Wtime() - d.wall_seconds;
   for (unsigned int s = 1; s <= step_; ++s)
-  {
-    std::ostringstream name;
-    name << "solution-" << std::setw(4) << std::setfill('0') << s << ".vtu";
-    pvd_records_.emplace_back(s, name.str());
-  }
+    pvd_records_.emplace_back(s, vtu_name(s));
   pcout_ << "resuming from " << file << " after load step " << step_ << std::endl;
   return file;
 }

@@ -137,7 +137,7 @@ void ExplicitSolver<dim>::inject_fault_if_due(bool first_attempt)
 template <int dim>
 unsigned int ExplicitSolver<dim>::total_steps() const
 {
-  return (prm_.loading.boundary == "biaxial" ? prm_.loading.isotropic_steps : 0) + prm_.loading.steps;
+  return steps_in_stage(1) + steps_in_stage(2);
 }
 
 template <int dim>

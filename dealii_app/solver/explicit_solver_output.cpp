@@ -116,13 +116,19 @@ void ExplicitSolver<dim>::output_step(unsigned int iterations)
   data_out.add_data_vector(aniso, "anisotropy");
   data_out.add_data_vector(eq_strain, "equivalent_strain_increment");
   data_out.build_patches();
-  std::ostringstream name;
-  name << "solution-" << std::setw(4) << std::setfill('0') << step_ << ".vtu";
-  std::ofstream vtu(prm_.output_directory + "/" + name.str());
+  std::ofstream vtu(prm_.output_directory + "/" + vtu_name(step_));
   data_out.write_vtu(vtu);
-  pvd_records_.emplace_back(step_, name.str());
+  pvd_records_.emplace_back(step_, vtu_name(step_));
   std::ofstream pvd(prm_.output_directory + "/solution.pvd");
   DataOutBase::write_pvd_record(pvd, pvd_records_);
+}
+
+template <int dim>
+std::string ExplicitSolver<dim>::vtu_name(unsigned int step)
+{
+  std::ostringstream name;
+  name << "solution-" << std::setw(4) << std::setfill('0') << step << ".vtu";
+  return name.str();
 }
 
 // Every rank calls this; each RVE's owner writes its files.

@@ -71,6 +71,18 @@ HistoryWriter::HistoryWriter(const std::string& file,
 
 namespace
 {
+/// Extent of the first dimension of dataset @p name.
+std::size_t rows(hid_t file, const char* name)
+{
+  hid_t set = H5Dopen2(file, name, H5P_DEFAULT);
+  hid_t space = H5Dget_space(set);
+  hsize_t dims[3] = {0, 0, 0};
+  H5Sget_simple_extent_dims(space, dims, nullptr);
+  H5Sclose(space);
+  H5Dclose(set);
+  return dims[0];
+}
+
 const char* const datasets[] = {"ip_position", "step", "axial_strain", "F", "P", "sigma", "fabric",
                                 "coordination", "anisotropy", "servo_iterations", "dem_steps"};
 }
@@ -83,19 +95,8 @@ HistoryWriter::HistoryWriter(const std::string& file, long long source) : name_(
   for (const char* name : datasets)
     if (H5Ocopy(source, name, file_, name, H5P_DEFAULT, H5P_DEFAULT) < 0)
       throw std::runtime_error("cannot copy '" + std::string(name) + "' into '" + file + "'");
-  hid_t set = H5Dopen2(file_, "ip_position", H5P_DEFAULT);
-  hid_t space = H5Dget_space(set);
-  hsize_t dims[2];
-  H5Sget_simple_extent_dims(space, dims, nullptr);
-  n_ip_ = dims[0];
-  H5Sclose(space);
-  H5Dclose(set);
-  set = H5Dopen2(file_, "step", H5P_DEFAULT);
-  space = H5Dget_space(set);
-  H5Sget_simple_extent_dims(space, dims, nullptr);
-  n_steps_ = dims[0];
-  H5Sclose(space);
-  H5Dclose(set);
+  n_ip_ = rows(file_, "ip_position");
+  n_steps_ = rows(file_, "step");
   H5Fflush(file_, H5F_SCOPE_GLOBAL);
 }
 

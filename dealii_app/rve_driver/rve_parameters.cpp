@@ -13,13 +13,6 @@ using dealii::Patterns::Selection;
 
 namespace
 {
-/// Paths in a parameter file are relative to that file's directory.
-std::string resolve(const std::string& base_dir, const std::string& path)
-{
-  if (path.empty() || std::filesystem::path(path).is_absolute())
-    return path;
-  return (std::filesystem::path(base_dir) / path).lexically_normal().string();
-}
 
 void require_file(const std::string& file, const std::string& entry, const std::string& prm)
 {
@@ -37,6 +30,22 @@ std::string number(double v)
   return s.str();
 }
 } // namespace
+
+std::string resolve_path(const std::string& base_dir, const std::string& path)
+{
+  if (path.empty() || std::filesystem::path(path).is_absolute())
+    return path;
+  return (std::filesystem::path(base_dir) / path).lexically_normal().string();
+}
+
+void require_positive(const std::string& subsection,
+                      std::initializer_list<std::pair<const char*, double>> values)
+{
+  for (const auto& [name, v] : values)
+    if (!(v > 0.0))
+      throw std::runtime_error("subsection " + subsection + ": '" + name + "' = " + number(v) +
+                               " must be > 0");
+}
 
 void RveParameters::declare_parameters(dealii::ParameterHandler& prm)
 {
@@ -89,8 +98,8 @@ void RveParameters::declare_parameters(dealii::ParameterHandler& prm)
 void RveParameters::parse_parameters(dealii::ParameterHandler& prm, const std::string& base_dir)
 {
   prm.enter_subsection("RVE");
-  template_file = resolve(base_dir, prm.get("Template"));
-  packing = resolve(base_dir, prm.get("Packing"));
+  template_file = resolve_path(base_dir, prm.get("Template"));
+  packing = resolve_path(base_dir, prm.get("Packing"));
   friction = prm.get_double("Friction");
   kn = prm.get_double("Normal stiffness");
   kt = prm.get_double("Tangential stiffness");
@@ -109,13 +118,10 @@ void RveParameters::parse_parameters(dealii::ParameterHandler& prm, const std::s
   membrane = prm.get("Frame membrane");
   max_overlap = prm.get_double("Max overlap");
   prm.leave_subsection();
-  for (auto [name, v] : {std::pair{"Normal stiffness", kn}, {"Tangential stiffness", kt},
-                         {"Time step", time_step}, {"Relaxation tolerance", relaxation_tolerance},
-                         {"Servo tolerance", servo_tolerance}, {"Force gain", gain_a},
-                         {"Moment gain", gain_m}, {"Max overlap", max_overlap}})
-    if (!(v > 0.0))
-      throw std::runtime_error(std::string("subsection RVE: '") + name + "' = " + number(v) +
-                               " must be > 0");
+  require_positive("RVE", {{"Normal stiffness", kn}, {"Tangential stiffness", kt},
+                           {"Time step", time_step}, {"Relaxation tolerance", relaxation_tolerance},
+                           {"Servo tolerance", servo_tolerance}, {"Force gain", gain_a},
+                           {"Moment gain", gain_m}, {"Max overlap", max_overlap}});
 }
 
 void RveParameters::check_files(const std::string& prm_file) const
@@ -188,7 +194,7 @@ void PathParameters::parse_parameters(dealii::ParameterHandler& prm, const std::
   loading_steps = prm.get_integer("Loading steps");
   axial_strain = prm.get_double("Axial strain");
   shear_strain = prm.get_double("Shear strain");
-  table_file = resolve(base_dir, prm.get("Table file"));
+  table_file = resolve_path(base_dir, prm.get("Table file"));
   stress_tolerance = prm.get_double("Stress tolerance");
   max_stress_iterations = prm.get_integer("Max stress iterations");
   free_shear = prm.get_bool("Free shear");
@@ -212,7 +218,7 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
 {
   const std::string base = std::filesystem::path(file).parent_path().string();
   prm.parse_input(file); // throws deal.II's message naming the line on unknown entries
-  output_directory = resolve(base, prm.get("Output directory"));
+  output_directory = resolve_path(base, prm.get("Output directory"));
   rve.parse_parameters(prm, base);
   path.parse_parameters(prm, base);
   rve.check_files(file);

@@ -10,10 +10,19 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <initializer_list>
 #include <string>
+#include <utility>
 
 namespace fe2dem::rve_driver
 {
+/// @p path relative to @p base_dir (a parameter file's directory), unless empty or absolute.
+std::string resolve_path(const std::string& base_dir, const std::string& path);
+
+/// @throws std::runtime_error "subsection S: 'NAME' = V must be > 0" for the first value that is not > 0.
+void require_positive(const std::string& subsection,
+                      std::initializer_list<std::pair<const char*, double>> values);
+
 /// subsection RVE: the packing, the contact law and the servo settings.
 struct RveParameters
 {

@@ -6,7 +6,6 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
-#include <utility>
 
 namespace fe2dem::macro
 {
@@ -45,8 +44,7 @@ void Geometry::parse_parameters(dealii::ParameterHandler& prm, const std::string
   if (!mesh_file.empty())
   {
     const std::string given = mesh_file;
-    if (std::filesystem::path(mesh_file).is_relative())
-      mesh_file = (std::filesystem::path(base) / mesh_file).lexically_normal().string();
+    mesh_file = rve_driver::resolve_path(base, mesh_file);
     const std::string ext = std::filesystem::path(mesh_file).extension().string();
     if (ext != ".msh" && ext != ".inp" && ext != ".ucd")
       throw std::runtime_error("subsection Geometry: 'Mesh file' = '" + given +
@@ -100,11 +98,8 @@ void Material::parse_parameters(dealii::ParameterHandler& prm)
   history = prm.get("History");
   skip_tolerance = prm.get_double("Skip tolerance");
   prm.leave_subsection();
-  for (auto [name, v] : {std::pair{"Shear modulus", shear_modulus}, {"Density", density},
-                         {"Stability modulus", stability_modulus}})
-    if (!(v > 0.0))
-      throw std::runtime_error(std::string("subsection Material: '") + name + "' = " +
-                               std::to_string(v) + " must be > 0");
+  rve_driver::require_positive("Material", {{"Shear modulus", shear_modulus}, {"Density", density},
+                                            {"Stability modulus", stability_modulus}});
 }
 
 void DynamicRelaxation::declare_parameters(dealii::ParameterHandler& prm)
@@ -129,10 +124,8 @@ void DynamicRelaxation::parse_parameters(dealii::ParameterHandler& prm)
   max_iterations = prm.get_integer("Max iterations");
   min_iterations = prm.get_integer("Min iterations");
   prm.leave_subsection();
-  for (auto [name, v] : {std::pair{"Safety factor", safety_factor}, {"Kinetic energy tolerance", kinetic_tolerance}})
-    if (!(v > 0.0))
-      throw std::runtime_error(std::string("subsection Dynamic relaxation: '") + name + "' = " +
-                               std::to_string(v) + " must be > 0");
+  rve_driver::require_positive("Dynamic relaxation", {{"Safety factor", safety_factor},
+                                                      {"Kinetic energy tolerance", kinetic_tolerance}});
 }
 
 void Loading::declare_parameters(dealii::ParameterHandler& prm)

@@ -16,10 +16,11 @@ keys = [("stress_ratio_mean", "stress ratio (mean over IPs)"), ("J_rel_mean", "v
         ("coordination_mean", "coordination number"), ("anisotropy_mean", "fabric anisotropy")]
 for arg in sys.argv[2:]:
     label, path = arg.split("=", 1)
-    rows = [r for r in csv.DictReader(open(path)) if r["stage"] == "2"]
+    all_rows = list(csv.DictReader(open(path)))
+    rows = [r for r in all_rows if r["stage"] == "2"]
+    first = [r for r in all_rows if r["stage"] == "1"]
     x = [0.0] + [float(r["axial_strain"]) for r in rows]
     for a, (k, _) in zip(ax.flat, keys):
-        first = [r for r in csv.DictReader(open(path)) if r["stage"] == "1"]
         y0 = float(first[-1][k]) if first and k != "J_rel_mean" else (0.0 if k == "J_rel_mean" else float(rows[0][k]))
         a.plot(x, [y0] + [float(r[k]) for r in rows], "o-", ms=3, label=label)
 for a, (_, lab) in zip(ax.flat, keys):

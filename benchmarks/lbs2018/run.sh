@@ -1,0 +1,117 @@
+#!/usr/bin/env bash
+# Reproduces the [LBS] study of physics.md §3.1 (the paper's §4) with FE2DEM.
+#
+# Usage: benchmarks/lbs2018/run.sh [--build DIR] [--np N] CASE... | all
+#   mesh_1x1 mesh_1x2 mesh_2x4 mesh_4x8   mesh convergence (mesh_2x4 is also
+#                                         the reference of every study:
+#                                         friction 0.4, free rotation, lbs_ref)
+#   dns_A dns_B                           direct numerical simulations
+#   mu0.2 mu0.6                           friction study (2x4)
+#   locked                                inner-particle rotation locked (2x4)
+#   a005 a008                             initial anisotropy 0.05 / 0.08 (2x4)
+#   all                                   every case above, then analyse.py
+# Options: --build DIR (default: build/ of the repository), --np N MPI ranks
+# of the multiscale runs (default 2; the DNS runs on one core).
+#
+# Raw output goes to runs/CASE/ (not committed); the wall time, core count,
+# date, commit and machine of each case go to results/runs.csv. analyse.py
+# turns runs/ into the committed results/*.csv and results/*.png.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+source "$root/benchmarks/common.sh"
+build="$root/build" np=2
+all_cases=(mesh_1x1 mesh_1x2 mesh_2x4 mesh_4x8 dns_A dns_B mu0.2 mu0.6 locked a005 a008)
+
+usage() { sed -n '4,16p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 2; }
+cases=()
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --build) [[ $# -ge 2 ]] || usage; build="$(realpath -m "$2")"; shift 2 ;;
+    --np) [[ $# -ge 2 && "$2" =~ ^[1-9][0-9]*$ ]] || { echo "run.sh: --np needs a positive integer" >&2; exit 2; }
+          np=$2; shift 2 ;;
+    all) cases+=("${all_cases[@]}"); shift ;;
+    -h|--help) usage ;;
+    *) [[ " ${all_cases[*]} " == *" $1 "* ]] || { echo "run.sh: unknown case '$1' (cases: ${all_cases[*]} all)" >&2; exit 2; }
+       cases+=("$1"); shift ;;
+  esac
+done
+[[ ${#cases[@]} -gt 0 ]] || usage
+for exe in dealii_app/solver/fe2dem dealii_app/rve_driver/fe2dem-rve; do
+  [[ -x "$build/$exe" ]] || { echo "run.sh: $build/$exe not found: build first (scripts/run-tests.sh) or pass --build DIR" >&2; exit 1; }
+done
+cd "$here"
+mkdir -p runs results
+
+# The entries a case changes in lbs2018.prm (printed after it: the last value wins).
+overrides() {
+  local cells
+  case "$1" in
+    mesh_*) cells=${1#mesh_}; printf 'subsection Geometry\n  set Cells x = %s\n  set Cells y = %s\nend\n' "${cells%x*}" "${cells#*x}" ;;
+    mu*) printf 'subsection RVE\n  set Friction = %s\nend\n' "${1#mu}" ;;
+    locked) printf 'subsection RVE\n  set Rotation = locked\nend\n' ;;
+    a005|a008) printf 'subsection RVE\n  set Packing = ../../rve_templates/packings/lbs_%s\nend\n' "$1" ;;
+  esac
+  # Particles and contact forces of every IP at 9 % axial strain (step 10 + 18)
+  # for the pictures of the highest- and lowest-stress IPs.
+  case "$1" in
+    mesh_2x4|mesh_4x8)
+      cells=${1#mesh_}
+      printf 'subsection Particle dumps\n  set Points = %s\n  set Every = 28\nend\n' \
+        "$(seq -s, 0 $(( ${cells%x*} * ${cells#*x} * 4 - 1 )))" ;;
+  esac
+}
+
+# The reference packing tiled 1x2 (A) or 2x4 (B), framed like an RVE.
+make_dns_packing() {
+  local name=$1 nx=$2 ny=$3
+  mkdir -p runs/packings
+  python3 "$root/rve_templates/tile_packing.py" "$root/rve_templates/packings/lbs_ref.periodic.data" \
+    "$nx" "$ny" "runs/packings/$name.periodic.data"
+  python3 "$root/rve_templates/build_frame.py" "runs/packings/$name.periodic.data" "$name" \
+    --outdir runs/packings --allow-rectangular --quiet
+}
+
+# Paths in a parameter file are relative to it; the case copy sits in runs/CASE/.
+absolute_paths() {
+  sed -i "s#\.\./\.\./rve_templates#$root/rve_templates#; s#^set Output directory.*#set Output directory = $here/$out#" "$1"
+}
+
+run_case() {
+  local c=$1 out="runs/$1" prm status=1 cores start
+  rm -rf "$out"; mkdir -p "$out"
+  start=$(date +%s.%N)
+  case "$c" in
+    dns_*)
+      [[ $c == dns_A ]] && make_dns_packing dns_A 1 2 || make_dns_packing dns_B 2 4
+      prm="$out/case.prm"
+      sed "s#runs/packings/dns_B#$here/runs/packings/$c#" dns.prm > "$prm"
+      absolute_paths "$prm"
+      cores=1
+      echo "run.sh: $c: fe2dem-rve on $(awk '/rve_natoms/ {print $4}' "runs/packings/$c.vars") particles"
+      "$build/dealii_app/rve_driver/fe2dem-rve" "$prm" > "$out/run.log" 2>&1 && status=0 || true ;;
+    *)
+      prm="$out/case.prm"
+      { cat lbs2018.prm; overrides "$c"; } > "$prm"
+      absolute_paths "$prm"
+      cores=$np
+      echo "run.sh: $c: fe2dem on $np ranks"
+      mpirun --allow-run-as-root --oversubscribe -np "$np" "$build/dealii_app/solver/fe2dem" "$prm" \
+        > "$out/run.log" 2>&1 && status=0 || true ;;
+  esac
+  local wall
+  wall=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN {printf "%.1f", e - s}')
+  echo "${c}_wall $wall s"
+  echo "${c}_cores $cores 1"
+  echo "${c}_completed $(( 1 - status )) bool"
+  [[ $status == 0 ]] || { echo "run.sh: $c did not finish; end of $out/run.log:" >&2; tail -n 5 "$out/run.log" >&2; }
+  # results/runs.csv keeps the newest row of each case
+  if [[ -f results/runs.csv ]]; then
+    grep -v "^[^,]*,[^,]*,[^,]*,$c," results/runs.csv > results/runs.csv.tmp || true
+    mv results/runs.csv.tmp results/runs.csv
+  fi
+  append_result results/runs.csv "case,cores,wall_s,completed" "$c,$cores,$wall,$(( 1 - status ))"
+}
+
+for c in "${cases[@]}"; do run_case "$c"; done
+/usr/bin/python3 "$here/analyse.py" "$here"

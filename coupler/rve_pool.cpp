@@ -18,6 +18,7 @@ struct Record
 {
   int index;
   int skipped;    ///< 1: F within the skip tolerance of the last solve, result reused
+  int converged;  ///< 0: a bounded solve stopped at the step limit
   double seconds; ///< wall time of the solve: the cost used for placement
   LAMMPS_NS::FixRveServo::Result result;
 };
@@ -138,7 +139,7 @@ std::vector<RveResponse> RvePool::solve(const std::vector<Eigen::Matrix2d>& F)
   std::string reason;
   for (auto& [k, rve] : local_)
   {
-    Record r{static_cast<int>(k), 0, 0.0, {}};
+    Record r{static_cast<int>(k), 0, 1, 0.0, {}};
     if (skip_tolerance_ > 0.0 && distance(F[k], rve->result().F) < skip_tolerance_)
     {
       r.skipped = 1;
@@ -148,7 +149,8 @@ std::vector<RveResponse> RvePool::solve(const std::vector<Eigen::Matrix2d>& F)
     }
     try
     {
-      r.result = rve->solve(macro_to_rve(F[k]));
+      r.result = rve->solve(macro_to_rve(F[k]), step_limit_);
+      r.converged = rve->last_solve_converged();
     }
     catch (const std::exception& e)
     {
@@ -192,6 +194,7 @@ std::vector<RveResponse> RvePool::solve(const std::vector<Eigen::Matrix2d>& F)
   for (const Record& r : all)
   {
     out[r.index] = rve_to_macro(r.result);
+    out[r.index].converged = r.converged != 0;
     if (r.skipped)
     {
       out[r.index].solved = false;

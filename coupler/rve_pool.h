@@ -83,6 +83,12 @@ public:
    * response is reused (RveResponse::solved = false). 0 (default): always solve.
    */
   void set_skip_tolerance(double tolerance) { skip_tolerance_ = tolerance; }
+  /**
+   * Multiple time stepping: every solve() runs at most @p steps DEM steps per
+   * RVE and returns unconverged states as they are (RveResponse::converged =
+   * false; see ServoRve::solve). 0 (default): every solve runs to convergence.
+   */
+  void set_step_limit(long steps) { step_limit_ = steps; }
 
   /// Accepts the last solves as the converged load step.
   void commit();
@@ -143,5 +149,6 @@ private:
   bool committed_ = true;
   double local_seconds_ = 0.0;
   double skip_tolerance_ = 0.0;
+  long step_limit_ = 0;
 };
 } // namespace fe2dem

@@ -25,6 +25,7 @@ struct RveResponse
   int servo_iterations = 0;
   long dem_steps = 0;
   bool solved = true; ///< false: reused from the RVE's last solve (RvePool skip tolerance)
+  bool converged = true; ///< false: a bounded solve stopped at its step limit (RvePool::set_step_limit)
 };
 
 /// F (Eigen) into the fix's row-major {F11, F12, F21, F22}.

@@ -95,16 +95,29 @@ void ServoRve::open_instance(const std::string& restart_file)
   }
   instance_->file(setup_.template_file);
   fix_ = &instance_->fix<LAMMPS_NS::FixRveServo>(setup_.fix_id);
+  budget_ = fix_->max_steps();
 }
 
-const ServoRve::Result& ServoRve::solve(const Mat2& F)
+const ServoRve::Result& ServoRve::solve(const Mat2& F, long step_limit)
 {
   if (mode_ == HistoryMode::committed && !at_committed_state_)
     rollback();
   at_committed_state_ = false;
+  const bool bounded = limit_steps(step_limit);
   fix_->set_deformation(F);
-  run_until_done();
+  run_until_done(bounded);
   return fix_->result();
+}
+
+bool ServoRve::limit_steps(long step_limit)
+{
+  const long every = fix_->check_interval();
+  const long limit = (step_limit + every - 1) / every * every;
+  const bool bounded = step_limit > 0 && limit < budget_;
+  const long steps = bounded ? limit : budget_;
+  if (fix_->max_steps() != steps)
+    instance_->command("fix_modify " + setup_.fix_id + " max_steps " + std::to_string(steps));
+  return bounded;
 }
 
 RveResponse ServoRve::solve_increment(const Eigen::Matrix2d& d_eps)
@@ -146,7 +159,7 @@ std::vector<char> ServoRve::committed_state() const
   return read_bytes(committed_file_);
 }
 
-void ServoRve::run_until_done()
+void ServoRve::run_until_done(bool bounded)
 {
   const double t0 = MPI_Wtime();
   // The first chunk of every solve does LIGGGHTS' full set-up (neighbour
@@ -160,7 +173,12 @@ void ServoRve::run_until_done()
     first = false;
   }
   last_seconds_ = MPI_Wtime() - t0;
-  if (fix_->status() != LAMMPS_NS::FixRveServo::converged)
+  last_converged_ = fix_->status() == LAMMPS_NS::FixRveServo::converged;
+  // A bounded solve that used its steps is not a failure: the fix homogenised
+  // the state it stopped in, and the next solve continues from there.
+  if (bounded && fix_->status() == LAMMPS_NS::FixRveServo::over_budget)
+    return;
+  if (!last_converged_)
     throw RveSolveError(fix_->status(), std::string(LAMMPS_NS::FixRveServo::status_name(
                                           fix_->status())) +
                                           ": " + fix_->failure_reason());

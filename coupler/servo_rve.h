@@ -78,8 +78,16 @@ public:
    * In committed mode the solve starts from the last committed state.
    * @throws RveSolveError if the fix reports no convergence, an escaped
    *         particle or a blow-up.
+   *
+   * Multiple time stepping ([LSYF] Eq. 66): with @p step_limit > 0 the solve
+   * runs at most that many DEM steps (rounded up to a multiple of the fix's
+   * check interval, so that it ends on a check) and returns the state it
+   * stopped in, homogenised there, if it has not converged by then
+   * (last_solve_converged() false). 0: run until the fix's step budget.
    */
-  const Result& solve(const Mat2& F);
+  const Result& solve(const Mat2& F, long step_limit = 0);
+  /// false if the last solve stopped at its step limit before converging.
+  bool last_solve_converged() const { return last_converged_; }
   /// Rve interface: macro_to_rve, solve, rve_to_macro.
   RveResponse solve(const Eigen::Matrix2d& F) override { return rve_to_macro(solve(macro_to_rve(F))); }
   RveResponse solve_increment(const Eigen::Matrix2d& d_eps) override;
@@ -107,7 +115,9 @@ private:
   };
   ServoRve(const RveSetup& setup, HistoryMode mode, const std::string& restart_file, FromRestart);
   void open_instance(const std::string& restart_file);
-  void run_until_done();
+  void run_until_done(bool bounded = false);
+  /// Sets the fix's step budget for the next solve: @p step_limit or the template's budget.
+  bool limit_steps(long step_limit);
 
   RveSetup setup_;
   HistoryMode mode_;
@@ -118,5 +128,7 @@ private:
   std::unique_ptr<LiggghtsInstance> instance_;
   LAMMPS_NS::FixRveServo* fix_ = nullptr;
   double last_seconds_ = 0.0;
+  long budget_ = 0; ///< the template's step budget (max_steps), restored after bounded solves
+  bool last_converged_ = true;
 };
 } // namespace fe2dem

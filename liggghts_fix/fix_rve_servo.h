@@ -131,6 +131,8 @@ public:
   const std::vector<double>& frame_rotations() const { return theta_frame_; }
   /// Steps between checks: C++ drivers run chunks of this length.
   int check_interval() const { return check_every_; }
+  /// Step budget of one solve (keyword max_steps, fix_modify max_steps).
+  long max_steps() const { return max_steps_; }
   /// One particle as output sees it (particle pictures, force chains).
   struct Particle
   {

@@ -10,7 +10,9 @@
 #   converged state, [LBS]), warm (continuous history: warm starts, [LSYF]),
 #   skip1e-5, skip1e-4 (warm + skip tolerance), check10 (warm + RVE
 #   convergence checks every 10 DEM steps instead of 50), fast (check10 +
-#   skip1e-5). Default: all six.
+#   skip1e-5), mtsN (check10 + multiple time stepping: at most N DEM steps
+#   per RVE and DR iteration until (M9) first holds, e.g. mts50).
+#   Default: the first six.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -27,6 +29,7 @@ overrides() {
     skip*) printf 'subsection Material\n  set History = continuous\n  set Skip tolerance = %s\nend\n' "${1#skip}" ;;
     check10) printf 'subsection Material\n  set History = continuous\nend\nsubsection RVE\n  set Check interval = 10\nend\n' ;;
     fast) overrides check10; printf 'subsection Material\n  set Skip tolerance = 1e-5\nend\n' ;;
+    mts[0-9]*) overrides check10; printf 'subsection Material\n  set DEM steps per iteration = %s\nend\n' "${1#mts}" ;;
     *) echo "unknown setting '$1'" >&2; exit 2 ;;
   esac
 }

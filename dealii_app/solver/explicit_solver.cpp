@@ -312,6 +312,7 @@ void ExplicitSolver<dim>::update_stresses()
     h.dem_steps = r[p].dem_steps;
     dem_steps_in_step_ += r[p].dem_steps;
     rve_solves_in_step_ += r[p].solved;
+    unconverged_in_step_ += !r[p].converged;
   }
   rve_seconds_in_step_ += pool_->last_local_seconds();
 }
@@ -354,6 +355,11 @@ unsigned int ExplicitSolver<dim>::relax_load_step()
   const double omega_max = 2.0 * std::sqrt(double(dim)) * wave_speed / h_min_;
   const double dt_stable = dr.safety_factor * 2.0 / omega_max;
   double e_max = 0.0;
+  // Multiple time stepping: bounded RVE solves until (M9) first holds, then
+  // full ones until it holds again, so that a step ends on relaxed RVEs.
+  bool bounded = pool_ && prm_.material.steps_per_iteration > 0;
+  if (pool_)
+    pool_->set_step_limit(bounded ? prm_.material.steps_per_iteration : 0);
   for (unsigned int it = 1; it <= dr.max_iterations; ++it)
   {
     if (const int signal = stop_signal_received())
@@ -381,7 +387,13 @@ unsigned int ExplicitSolver<dim>::relax_load_step()
       e_kin += 0.5 * mass_[i] * velocity_[i] * velocity_[i];
     }
     e_max = std::max(e_max, e_kin);
-    if (it >= dr.min_iterations && (e_max == 0.0 || e_kin <= dr.kinetic_tolerance * e_max))
+    const bool relaxed = it >= dr.min_iterations && (e_max == 0.0 || e_kin <= dr.kinetic_tolerance * e_max);
+    if (relaxed && bounded)
+    {
+      bounded = false;
+      pool_->set_step_limit(0);
+    }
+    else if (relaxed)
     {
       // P at the converged displacement. (With committed RVE history this is
       // one more trial solve from the committed state, at the final U.)

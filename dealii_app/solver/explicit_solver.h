@@ -122,6 +122,7 @@ private:
   double u_top_ic_ = 0.0, h_ic_ = 0.0; ///< top displacement and height after stage 1
   long dem_steps_in_step_ = 0;
   long rve_solves_in_step_ = 0;          ///< RVE solves (skipped ones not counted)
+  long unconverged_in_step_ = 0;         ///< bounded solves that stopped at their step limit
   double rve_seconds_in_step_ = 0.0;     ///< this rank's wall seconds in RVE solves
   std::unique_ptr<fe2dem::RvePool> pool_;
   std::unique_ptr<HistoryWriter> history_file_;

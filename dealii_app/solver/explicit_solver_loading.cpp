@@ -73,7 +73,7 @@ void ExplicitSolver<dim>::run()
 template <int dim>
 unsigned int ExplicitSolver<dim>::solve_load_step()
 {
-  dem_steps_in_step_ = rve_solves_in_step_ = 0;
+  dem_steps_in_step_ = rve_solves_in_step_ = unconverged_in_step_ = 0;
   rve_seconds_in_step_ = 0.0;
   const double n = steps_in_stage(stage_);
   double done = 0.0, size = 1.0;

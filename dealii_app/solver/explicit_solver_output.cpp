@@ -98,6 +98,9 @@ void ExplicitSolver<dim>::output_step(unsigned int iterations)
   pcout_ << "stage " << stage_ << " step " << std::setw(3) << step_ << "  axial strain "
          << std::setw(9) << axial << "  stress ratio " << std::setw(9) << r_sum / n
          << "  DR iterations " << std::setw(6) << iterations << "  DEM steps " << dem_steps_in_step_
+         << (prm_.material.steps_per_iteration > 0
+               ? "  unconverged RVE returns " + std::to_string(unconverged_in_step_)
+               : std::string())
          << "  wall " << std::setprecision(4) << MPI_Wtime() - t_start_ << " s  ETA "
          << (MPI_Wtime() - t_start_) / step_ * (total_steps() - step_) << " s"
          << std::setprecision(6) << std::endl;

@@ -78,6 +78,13 @@ void Material::declare_parameters(dealii::ParameterHandler& prm)
                     "scheme). An acceleration (benchmarks/perf/README.md): on the 1x1 test it saves "
                     "40 % of the solves, but on the 2x4 mesh it kept dynamic relaxation from "
                     "converging; use with care.");
+  prm.declare_entry("DEM steps per iteration", "0", Integer(0),
+                    "RVE, continuous history only: multiple time stepping ([LSYF] Eq. 66). Until "
+                    "(M9) first holds in a load step, each RVE runs at most this many DEM steps "
+                    "per dynamic-relaxation iteration (rounded up to a multiple of the RVE "
+                    "'Check interval') and returns its stress unconverged; from then on every "
+                    "solve relaxes fully again and the step ends when (M9) holds with converged "
+                    "RVEs. 0: relax every RVE fully in every iteration (the paper's scheme).");
   prm.declare_entry("Shear modulus", "1e6", Double(0.0), "mu, > 0 [force/area; 2D: force/length].");
   prm.declare_entry("Lame lambda", "1e6", Double(0.0), "lambda, >= 0.");
   prm.declare_entry("Density", "1", Double(0.0),
@@ -97,7 +104,14 @@ void Material::parse_parameters(dealii::ParameterHandler& prm)
   stability_modulus = prm.get_double("Stability modulus");
   history = prm.get("History");
   skip_tolerance = prm.get_double("Skip tolerance");
+  steps_per_iteration = prm.get_integer("DEM steps per iteration");
   prm.leave_subsection();
+  if (steps_per_iteration > 0 && history != "continuous")
+    throw std::runtime_error("subsection Material: 'DEM steps per iteration' = " +
+                             std::to_string(steps_per_iteration) + " needs 'History' = continuous "
+                             "(with committed history every solve restarts from the last load "
+                             "step, so bounded solves would never progress); set it to 0 or use "
+                             "continuous history");
   rve_driver::require_positive("Material", {{"Shear modulus", shear_modulus}, {"Density", density},
                                             {"Stability modulus", stability_modulus}});
 }

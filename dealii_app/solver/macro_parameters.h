@@ -35,6 +35,7 @@ struct Material
   double stability_modulus; ///< RVE: upper estimate of the tangent modulus (stable step)
   std::string history;      ///< RVE: committed | continuous
   double skip_tolerance;    ///< RVE: reuse the last response if |F - F_last| below it (0: off)
+  long steps_per_iteration; ///< RVE: DEM steps per DR iteration before convergence (0: relax fully)
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm);
 };

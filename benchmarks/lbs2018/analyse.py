@@ -97,6 +97,26 @@ def run_info():
     return info
 
 
+def cost(case, info):
+    """Wall time, cores, DEM steps, macro iterations and, for fe2dem, the share
+    of the wall time in RVE solves and the load imbalance (max / mean rank)."""
+    d, r = os.path.join(runs, case), info.get(case, {})
+    out = {"cores": r.get("cores", ""), "wall_s": r.get("wall_s", ""), "completed": r.get("completed", "")}
+    if os.path.exists(os.path.join(d, "summary.csv")):
+        rows = list(csv.DictReader(open(os.path.join(d, "summary.csv"))))
+        out["dem_steps"] = sum(int(float(x["dem_steps"])) for x in rows)
+        out["macro_iterations"] = sum(int(x["macro_iterations"]) for x in rows)
+        rve_max = sum(float(x["rve_rank_max_s"]) for x in rows)
+        rve_mean = sum(float(x["rve_rank_mean_s"]) for x in rows)
+        out["rve_share"] = rve_max / float(rows[-1]["wall_s"])
+        out["imbalance"] = rve_max / rve_mean
+    elif os.path.exists(os.path.join(d, "rve.csv")):
+        rows = list(csv.DictReader(open(os.path.join(d, "rve.csv"))))
+        out["dem_steps"] = sum(int(float(x["dem_steps"])) for x in rows)
+        out["macro_iterations"] = sum(int(float(x["stress_iterations"])) for x in rows)
+    return out
+
+
 def key_figures(c):
     i = int(np.argmax(c["stress_ratio"]))
     return {"peak_stress_ratio": c["stress_ratio"][i], "axial_strain_at_peak": c["axial_strain"][i],
@@ -196,21 +216,36 @@ def vtu_arrays(path):
 
 
 def plot_equivalent_strain(mesh):
+    """Incremental equivalent strain |F_n - F_(n-1)| (Frobenius, the VTU's
+    equivalent_strain_increment per IP instead of per cell) of the last step
+    on the deformed mesh: each Q1 cell is split into the four quarters around
+    its 2x2 Gauss points (history.h5 order: cell by cell as in the VTU,
+    points lexicographic)."""
     d = os.path.join(runs, "mesh_" + mesh)
     vtus = sorted(f for f in os.listdir(d) if f.startswith("solution-") and f.endswith(".vtu"))
     points, cells, data = vtu_arrays(os.path.join(d, vtus[-1]))
     x = 1e3 * (points[:, :2] + data["displacement"][:, :2])  # mm
     conn, offsets = cells["connectivity"], cells["offsets"]
-    starts = np.concatenate(([0], offsets[:-1]))
-    # deal.II writes each Q1 patch as a VTK_QUAD in lexicographic order 0 1 3 2
-    polys = [x[conn[s:e]] for s, e in zip(starts, offsets)]
-    values = [data["equivalent_strain_increment"][conn[s:e]].mean() for s, e in zip(starts, offsets)]
+    with h5py.File(os.path.join(d, "history.h5"), "r") as h:
+        F = h["F"][-2:]
+    increment = np.linalg.norm(F[1] - F[0], axis=1)
+    polys, values = [], []
+    for c, s in enumerate(np.concatenate(([0], offsets[:-1]))):
+        v = x[conn[s:s + 4]][[0, 1, 3, 2]]        # VTK quad order -> lexicographic vertices
+        mid = lambda a, b: 0.5 * (v[a] + v[b])      # noqa: E731
+        centre = v.mean(axis=0)
+        for q, (corner, e1, e2) in enumerate(((0, (0, 1), (0, 2)), (1, (0, 1), (1, 3)),
+                                              (2, (2, 3), (0, 2)), (3, (2, 3), (1, 3)))):
+            polys.append([v[corner], mid(*e1), centre, mid(*e2)])
+            values.append(increment[4 * c + q])
     fig, ax = plt.subplots(figsize=(5.5, 7))
-    pc = PolyCollection(polys, array=np.array(values), cmap="viridis", edgecolors="k", linewidths=0.5)
+    pc = PolyCollection(polys, array=np.array(values), cmap="viridis", edgecolors="none")
     ax.add_collection(pc)
+    ax.add_collection(PolyCollection([x[conn[s:s + 4]] for s in np.concatenate(([0], offsets[:-1]))],
+                                     facecolors="none", edgecolors="k", linewidths=0.6))
     ax.autoscale_view()
     ax.set_aspect("equal")
-    fig.colorbar(pc, ax=ax, label="equivalent strain increment: |F_n - F_(n-1)| (Frobenius), last step")
+    fig.colorbar(pc, ax=ax, label="equivalent strain increment |F_n - F_(n-1)| per IP, last step")
     ax.set_title(f"{mesh}: deformed mesh at the end ({vtus[-1]})", fontsize=9)
     ax.set_xlabel("x [mm]")
     ax.set_ylabel("y [mm]")
@@ -238,11 +273,12 @@ def pre_peak_spread(curves, cases):
 def main():
     os.makedirs(results, exist_ok=True)
     all_cases = sorted({c for cases in STUDIES.values() for c, _ in cases})
-    curves = {c: curve(c) for c in all_cases}
+    info = run_info()
+    # a case is analysed once run.sh has recorded it (not while it runs)
+    curves = {c: curve(c) if c in info else None for c in all_cases}
     for c in all_cases:
         if curves[c] is None:
-            print(f"analyse.py: no output in runs/{c}: run 'run.sh {c}' (skipped)")
-    info = run_info()
+            print(f"analyse.py: no finished output in runs/{c}: run 'run.sh {c}' (skipped)")
     with open(os.path.join(results, "curves.csv"), "w") as fh:
         fh.write("case,axial_strain," + ",".join(q for q, _ in QUANTITIES) + "\n")
         for c in all_cases:
@@ -274,6 +310,20 @@ def main():
             print(f"\n{mesh}: highest IP at 9 %: {hi} ({r_hi:.3f}), lowest: {lo} ({r_lo:.3f})")
             plot_particles(mesh, hi, lo, r_hi, r_lo)
             plot_equivalent_strain(mesh)
+    with open(os.path.join(results, "cost.csv"), "w") as fh:
+        keys = ["cores", "wall_s", "completed", "dem_steps", "macro_iterations", "rve_share", "imbalance"]
+        fh.write("case," + ",".join(keys) + "\n")
+        print("\ncost\n\n| case | cores | wall | DEM steps | macro iterations (DNS: stress iterations) "
+              "| RVE share of wall | imbalance max/mean |\n| --- | --- | --- | --- | --- | --- | --- |")
+        for c in all_cases:
+            if not curves[c]:
+                continue
+            k = cost(c, info)
+            fh.write(c + "," + ",".join(str(k.get(q, "")) for q in keys) + "\n")
+            share = f"{k['rve_share']:.2f}" if "rve_share" in k else "-"
+            imb = f"{k['imbalance']:.3f}" if "imbalance" in k else "-"
+            print(f"| {c} | {k['cores']} | {k['wall_s']} s | {k['dem_steps']:,} | {k['macro_iterations']:,} "
+                  f"| {share} | {imb} |")
     spread = pre_peak_spread(curves, ["mesh_1x1", "mesh_1x2", "mesh_2x4", "mesh_4x8", "dns_B"])
     if spread:
         (s, e), have = spread

@@ -262,11 +262,14 @@ def pre_peak_spread(curves, cases):
         return None
     grid = [e for e in curves[have[0]]["axial_strain"] if 0.0 < e <= PRE_PEAK + 1e-9]
     worst = (0.0, None)
-    for e in grid:
-        vals = [np.interp(e, curves[c]["axial_strain"], curves[c]["stress_ratio"]) for c in have]
-        s = (max(vals) - min(vals)) / np.mean(vals)
-        if s > worst[0]:
-            worst = (s, e)
+    with open(os.path.join(results, "prepeak_spread.csv"), "w") as fh:
+        fh.write("axial_strain,spread," + ",".join(have) + "\n")
+        for e in grid:
+            vals = [np.interp(e, curves[c]["axial_strain"], curves[c]["stress_ratio"]) for c in have]
+            s = (max(vals) - min(vals)) / np.mean(vals)
+            fh.write(f"{e:.6g},{s:.4f}," + ",".join(f"{v:.6g}" for v in vals) + "\n")
+            if s > worst[0]:
+                worst = (s, e)
     return worst, have
 
 

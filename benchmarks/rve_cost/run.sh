@@ -17,16 +17,25 @@ repeats="${4:-5}"
 template="$root/rve_templates/rve_setup_2d.liggghts"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
 
-coupler=(); coupler_sparse=(); bare=()
-for ((k = 0; k < repeats; ++k)); do
-  c=$("$build/benchmarks/rve_cost/bench_rve_steps" "$template" "$packing" "$steps" 50 | awk '/coupler_us_per_step/ {print $2}')
-  cs=$("$build/benchmarks/rve_cost/bench_rve_steps" "$template" "$packing" "$steps" 1000 | awk '/coupler_us_per_step/ {print $2}')
-  (cd "$tmp" && liggghts -in "$here/bare_liggghts.in" -var packing "$packing" -var steps "$steps" -log none > bare.out)
-  loop=$(awk -v n="$steps" '/Loop time of/ && $9 == n {print $4}' "$tmp/bare.out" | tail -1)
+# Each repeat is a pair measured back to back on the same core (taskset, so
+# that neither run migrates or shares a core with the other's leftovers),
+# in alternating order; the paired ratio cancels most of the drift of a
+# shared machine between repeats.
+pin=()
+if command -v taskset >/dev/null && [[ $(nproc) -ge 2 ]]; then pin=(taskset -c 1); fi
+run_coupler() { "${pin[@]}" "$build/benchmarks/rve_cost/bench_rve_steps" "$template" "$packing" "$steps" "$1" | awk '/coupler_us_per_step/ {print $2}'; }
+run_bare() {
+  (cd "$tmp" && "${pin[@]}" liggghts -in "$here/bare_liggghts.in" -var packing "$packing" -var steps "$steps" -log none > bare.out)
   grep -q "steps with $(awk '/atoms$/ {print $1; exit}' "$packing.rve.data") atoms" "$tmp/bare.out" ||
     { echo "bare liggghts run lost atoms; see $tmp/bare.out" >&2; exit 1; }
-  b=$(awk -v t="$loop" -v n="$steps" 'BEGIN {printf "%.4f", 1e6 * t / n}')
-  coupler+=("$c"); coupler_sparse+=("$cs"); bare+=("$b")
+  awk -v n="$steps" '/Loop time of/ && $9 == n {printf "%.4f", 1e6 * $4 / n}' "$tmp/bare.out" | tail -1
+}
+coupler=(); coupler_sparse=(); bare=(); pairs=()
+for ((k = 0; k < repeats; ++k)); do
+  if ((k % 2 == 0)); then c=$(run_coupler 50); b=$(run_bare); else b=$(run_bare); c=$(run_coupler 50); fi
+  cs=$(run_coupler 1000)
+  [[ -n "$c" && -n "$b" && -n "$cs" ]] || { echo "run.sh: a timing run failed (coupler '$c', bare '$b')" >&2; exit 1; }
+  coupler+=("$c"); coupler_sparse+=("$cs"); bare+=("$b"); pairs+=("$(ratio "$c" "$b")")
 done
 mc=$(median "${coupler[@]}"); mcs=$(median "${coupler_sparse[@]}"); mb=$(median "${bare[@]}")
 ratio=$(ratio "$mc" "$mb"); ratio_sparse=$(ratio "$mcs" "$mb")
@@ -41,9 +50,14 @@ echo "coupler_check1000_us_per_step $mcs us"
 echo "coupler_check1000_over_bare $ratio_sparse ratio"
 min_ratio=$(ratio "$(minimum "${coupler[@]}")" "$(minimum "${bare[@]}")")
 echo "coupler_over_bare_of_minima $min_ratio ratio"
+paired=$(median "${pairs[@]}")
+echo "coupler_over_bare_paired_median $paired ratio"
+echo "coupler_over_bare_paired_range $(minimum "${pairs[@]}")-$(printf '%s\n' "${pairs[@]}" | sort -g | tail -1) ratio"
+echo "pinned_to_core ${pin[*]:-none} -"
 echo "all_coupler_samples ${coupler[*]}"
 echo "all_coupler_check1000_samples ${coupler_sparse[*]}"
 echo "all_bare_samples ${bare[*]}"
+echo "all_paired_ratios ${pairs[*]}"
 append_result "$here/results.csv" \
-  "particles,steps,repeats,bare_us_per_step,coupler_us_per_step,ratio,coupler_check1000_us_per_step,ratio_check1000" \
-  "$natoms,$steps,$repeats,$mb,$mc,$ratio,$mcs,$ratio_sparse"
+  "particles,steps,repeats,bare_us_per_step,coupler_us_per_step,ratio,coupler_check1000_us_per_step,ratio_check1000,paired_median_ratio" \
+  "$natoms,$steps,$repeats,$mb,$mc,$ratio,$mcs,$ratio_sparse,$paired"

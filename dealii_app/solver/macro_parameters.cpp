@@ -84,7 +84,8 @@ void Material::declare_parameters(dealii::ParameterHandler& prm)
                     "per dynamic-relaxation iteration (rounded up to a multiple of the RVE "
                     "'Check interval') and returns its stress unconverged; from then on every "
                     "solve relaxes fully again and the step ends when (M9) holds with converged "
-                    "RVEs. 0: relax every RVE fully in every iteration (the paper's scheme).");
+                    "RVEs; the same after 1000 bounded iterations without (M9). 0: relax every "
+                    "RVE fully in every iteration (the paper's scheme).");
   prm.declare_entry("Shear modulus", "1e6", Double(0.0), "mu, > 0 [force/area; 2D: force/length].");
   prm.declare_entry("Lame lambda", "1e6", Double(0.0), "lambda, >= 0.");
   prm.declare_entry("Density", "1", Double(0.0),

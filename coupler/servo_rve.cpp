@@ -96,6 +96,7 @@ void ServoRve::open_instance(const std::string& restart_file)
   instance_->file(setup_.template_file);
   fix_ = &instance_->fix<LAMMPS_NS::FixRveServo>(setup_.fix_id);
   budget_ = fix_->max_steps();
+  limited_ = false; // a new instance has the template's budget
 }
 
 const ServoRve::Result& ServoRve::solve(const Mat2& F, long step_limit)
@@ -114,9 +115,15 @@ bool ServoRve::limit_steps(long step_limit)
   const long every = fix_->check_interval();
   const long limit = (step_limit + every - 1) / every * every;
   const bool bounded = step_limit > 0 && limit < budget_;
-  const long steps = bounded ? limit : budget_;
-  if (fix_->max_steps() != steps)
-    instance_->command("fix_modify " + setup_.fix_id + " max_steps " + std::to_string(steps));
+  // Touch max_steps only for bounded solves and to undo them, so that a
+  // budget set from outside (fix_modify, e.g. an injected fault) stays.
+  if (bounded || limited_)
+  {
+    const long steps = bounded ? limit : budget_;
+    if (fix_->max_steps() != steps)
+      instance_->command("fix_modify " + setup_.fix_id + " max_steps " + std::to_string(steps));
+  }
+  limited_ = bounded;
   return bounded;
 }
 

@@ -128,7 +128,8 @@ private:
   std::unique_ptr<LiggghtsInstance> instance_;
   LAMMPS_NS::FixRveServo* fix_ = nullptr;
   double last_seconds_ = 0.0;
-  long budget_ = 0; ///< the template's step budget (max_steps), restored after bounded solves
+  long budget_ = 0;      ///< the template's step budget (max_steps), restored after bounded solves
+  bool limited_ = false; ///< the fix's max_steps is currently a bound of limit_steps()
   bool last_converged_ = true;
 };
 } // namespace fe2dem

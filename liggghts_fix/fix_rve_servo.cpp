@@ -189,6 +189,7 @@ int FixRveServo::local_index(int tag) const
 
 void FixRveServo::setup(int vflag)
 {
+  membrane_stale_ = true; // atoms may have been sorted or read from a restart
   post_force(vflag);
 }
 

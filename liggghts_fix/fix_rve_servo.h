@@ -191,7 +191,27 @@ private:
     int a = 0, b = 0;     ///< frame indices, counter-clockwise
     double lo = 0, hi = 0; ///< reference extent along the side
   };
-  std::array<std::vector<MembraneSegment>, 4> membrane_; ///< bottom, right, top, left
+  std::array<std::vector<MembraneSegment>, 4> membrane_; ///< bottom, right, top, left; sorted by hi
+  std::array<bool, 4> membrane_ordered_{};               ///< lo sorted as well (bisection may stop early)
+  struct MembraneLine ///< a segment's current line, refreshed every step
+  {
+    int ia = 0, ib = 0;          ///< local indices of its frame particles
+    fe2dem::Vec2 xa{}, n{};      ///< start and inward unit normal
+    fe2dem::Vec2 e_over_length_sq{}; ///< (xb - xa) / |xb - xa|^2, for the parameter t
+  };
+  std::array<std::vector<MembraneLine>, 4> membrane_lines_; ///< parallel to membrane_
+  struct MembraneCandidate
+  {
+    int i = 0;              ///< local index of the inner particle
+    int side = 0, segment = 0; ///< membrane_[side][segment]
+  };
+  std::vector<MembraneCandidate> membrane_candidates_; ///< see collect_membrane_candidates()
+  bigint membrane_built_at_ = -1; ///< neighbor->lastcall when the candidates were collected
+  bool membrane_stale_ = true;    ///< F or the atoms changed: collect again
+  std::vector<MembraneCandidate> membrane_used_;       ///< segments of the candidates (i unused)
+  /// Refreshes membrane_lines_[side][k] from the current frame positions.
+  void update_membrane_line(int side, int k);
+  void collect_membrane_candidates();
   /// Moment of inertia of particle i (disc or sphere factor).
   double inertia_of(int i) const
   {

@@ -18,6 +18,7 @@ using namespace fe2dem;
 void FixRveServo::begin_solve()
 {
   F_ = evaluate_deformation();
+  membrane_stale_ = true; // its candidate search depends on F
   if (!keep_fluctuations_)
   {
     for (auto& w : w_)

@@ -1,6 +1,8 @@
 # Shared helpers of the benchmark scripts (source it).
 median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2) ? a[(NR+1)/2] : 0.5*(a[NR/2]+a[NR/2+1])}'; }
 minimum() { printf '%s\n' "$@" | sort -g | head -1; }
+# lower quartile (nearest rank): robust to the one-sided noise of a shared machine
+quartile1() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print a[int((NR + 3) / 4)]}'; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.4f", a / b}'; }
 # append_result CSV HEADER VALUES: one row "date,commit,machine,VALUES".
 append_result() {

@@ -50,6 +50,7 @@ echo "coupler_check1000_us_per_step $mcs us"
 echo "coupler_check1000_over_bare $ratio_sparse ratio"
 min_ratio=$(ratio "$(minimum "${coupler[@]}")" "$(minimum "${bare[@]}")")
 echo "coupler_over_bare_of_minima $min_ratio ratio"
+echo "coupler_over_bare_of_lower_quartiles $(ratio "$(quartile1 "${coupler[@]}")" "$(quartile1 "${bare[@]}")") ratio"
 paired=$(median "${pairs[@]}")
 echo "coupler_over_bare_paired_median $paired ratio"
 echo "coupler_over_bare_paired_range $(minimum "${pairs[@]}")-$(printf '%s\n' "${pairs[@]}" | sort -g | tail -1) ratio"

@@ -65,6 +65,7 @@
 #include <array>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace LAMMPS_NS
@@ -193,11 +194,11 @@ private:
   };
   std::array<std::vector<MembraneSegment>, 4> membrane_; ///< bottom, right, top, left; sorted by hi
   std::array<bool, 4> membrane_ordered_{};               ///< lo sorted as well (bisection may stop early)
-  struct MembraneLine ///< a segment's current line, refreshed every step
+  struct MembraneLine ///< a segment's current line (refreshed each step for the candidates' segments)
   {
     int ia = 0, ib = 0;          ///< local indices of its frame particles
-    fe2dem::Vec2 xa{}, n{};      ///< start and inward unit normal
-    fe2dem::Vec2 e_over_length_sq{}; ///< (xb - xa) / |xb - xa|^2, for the parameter t
+    fe2dem::Vec2 xa{}, e{}, n{}; ///< start, xb - xa and inward unit normal
+    fe2dem::Vec2 e_over_length_sq{}; ///< e / |e|^2, for the parameter t
   };
   std::array<std::vector<MembraneLine>, 4> membrane_lines_; ///< parallel to membrane_
   struct MembraneCandidate
@@ -208,7 +209,7 @@ private:
   std::vector<MembraneCandidate> membrane_candidates_; ///< see collect_membrane_candidates()
   bigint membrane_built_at_ = -1; ///< neighbor->lastcall when the candidates were collected
   bool membrane_stale_ = true;    ///< F or the atoms changed: collect again
-  std::vector<MembraneCandidate> membrane_used_;       ///< segments of the candidates (i unused)
+  std::vector<std::pair<int, int>> membrane_used_; ///< (side, segment) of the candidates, each once
   /// Refreshes membrane_lines_[side][k] from the current frame positions.
   void update_membrane_line(int side, int k);
   void collect_membrane_candidates();

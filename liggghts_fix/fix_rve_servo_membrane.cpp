@@ -63,6 +63,7 @@ void FixRveServo::update_membrane_line(int side, int k)
   const Vec2 e = Vec2{x[line.ib][0], x[line.ib][1]} - line.xa;
   const double length_sq = e[0] * e[0] + e[1] * e[1];
   const double length = std::sqrt(length_sq);
+  line.e = e;
   line.e_over_length_sq = (1.0 / length_sq) * e;
   line.n = {-e[1] / length, e[0] / length}; // inward: the frame runs counter-clockwise
 }
@@ -123,24 +124,17 @@ void FixRveServo::collect_membrane_candidates()
         const Vec2 d = c - line.xa;
         const double t = std::clamp(
           d[0] * line.e_over_length_sq[0] + d[1] * line.e_over_length_sq[1], 0.0, 1.0);
-        const Vec2 e = Vec2{x[line.ib][0], x[line.ib][1]} - line.xa;
-        const Vec2 gap = d - t * e; // centre minus its nearest point of the segment
+        const Vec2 gap = d - t * line.e; // centre minus its nearest point of the segment
         if (gap[0] * gap[0] + gap[1] * gap[1] < reach * reach)
         {
           membrane_candidates_.push_back({i, side, k});
-          membrane_used_.push_back({0, side, k});
+          membrane_used_.emplace_back(side, k);
         }
       }
     }
   }
-  auto before = [](const MembraneCandidate& a, const MembraneCandidate& b) {
-    return a.side != b.side ? a.side < b.side : a.segment < b.segment;
-  };
-  auto same = [](const MembraneCandidate& a, const MembraneCandidate& b) {
-    return a.side == b.side && a.segment == b.segment;
-  };
-  std::sort(membrane_used_.begin(), membrane_used_.end(), before);
-  membrane_used_.erase(std::unique(membrane_used_.begin(), membrane_used_.end(), same),
+  std::sort(membrane_used_.begin(), membrane_used_.end());
+  membrane_used_.erase(std::unique(membrane_used_.begin(), membrane_used_.end()),
                        membrane_used_.end());
   membrane_built_at_ = neighbor->lastcall;
   membrane_stale_ = false;
@@ -155,8 +149,8 @@ void FixRveServo::apply_membrane()
   if (membrane_stale_ || neighbor->lastcall != membrane_built_at_)
     collect_membrane_candidates(); // also refreshes every line
   else
-    for (const MembraneCandidate& u : membrane_used_)
-      update_membrane_line(u.side, u.segment); // only the lines candidates need
+    for (const auto& [side, k] : membrane_used_)
+      update_membrane_line(side, k); // only the lines candidates need
   for (const MembraneCandidate& cand : membrane_candidates_)
   {
     const int i = cand.i;

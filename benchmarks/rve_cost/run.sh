@@ -16,6 +16,7 @@ steps="${3:-20000}"
 repeats="${4:-5}"
 template="$root/rve_templates/rve_setup_2d.liggghts"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
+natoms=$(awk '/atoms$/ {print $1; exit}' "$packing.rve.data")
 
 # Each repeat is a pair measured back to back on the same core (taskset, so
 # that neither run migrates or shares a core with the other's leftovers),
@@ -26,7 +27,7 @@ if command -v taskset >/dev/null && [[ $(nproc) -ge 2 ]]; then pin=(taskset -c 1
 run_coupler() { "${pin[@]}" "$build/benchmarks/rve_cost/bench_rve_steps" "$template" "$packing" "$steps" "$1" | awk '/coupler_us_per_step/ {print $2}'; }
 run_bare() {
   (cd "$tmp" && "${pin[@]}" liggghts -in "$here/bare_liggghts.in" -var packing "$packing" -var steps "$steps" -log none > bare.out)
-  grep -q "steps with $(awk '/atoms$/ {print $1; exit}' "$packing.rve.data") atoms" "$tmp/bare.out" ||
+  grep -q "steps with $natoms atoms" "$tmp/bare.out" ||
     { echo "bare liggghts run lost atoms; see $tmp/bare.out" >&2; exit 1; }
   awk -v n="$steps" '/Loop time of/ && $9 == n {printf "%.4f", 1e6 * $4 / n}' "$tmp/bare.out" | tail -1
 }
@@ -39,7 +40,6 @@ for ((k = 0; k < repeats; ++k)); do
 done
 mc=$(median "${coupler[@]}"); mcs=$(median "${coupler_sparse[@]}"); mb=$(median "${bare[@]}")
 ratio=$(ratio "$mc" "$mb"); ratio_sparse=$(ratio "$mcs" "$mb")
-natoms=$(awk '/atoms$/ {print $1; exit}' "$packing.rve.data")
 echo "particles $natoms count"
 echo "steps $steps steps"
 echo "repeats $repeats runs"

@@ -331,6 +331,9 @@ def main():
             print(f"| {c} | {k['cores']} | {k['wall_s']} s | {k['dem_steps']:,} | {k['macro_iterations']:,} "
                   f"| {share} | {imb} |")
     meshes = ["mesh_1x1", "mesh_1x2", "mesh_2x4", "mesh_4x8"]
+    spread = pre_peak_spread(curves, meshes, "prepeak_spread_meshes.csv")
+    if spread:
+        print(f"\npre_peak_stress_ratio_spread_meshes {spread[0][0]:.4f} 1  (the meshes alone; at {spread[0][1]})")
     # the criterion with DNS B as in dns.prm, then with the looser
     # DNS tolerances in its place, to show how much the DNS's own scatter weighs
     for dns in ["dns_B", "dns_B_tol1e-3", "dns_B_tol1e-4"]:

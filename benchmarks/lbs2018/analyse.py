@@ -53,6 +53,7 @@ STUDIES = {
     "rotation": [("mesh_2x4", "rotation free"), ("locked", "rotation locked")],
     "anisotropy": [("mesh_2x4", "A0 = 0.02 (lbs_ref)"), ("a005", "A0 = 0.05 (lbs_a005)"),
                    ("a008", "A0 = 0.08 (lbs_a008)")],
+    "load_step": [("mesh_4x8", "4x8, stage 2 in 0.5 % steps"), ("mesh_4x8_steps22", "4x8, 0.25 % steps")],
     "dns_tolerance": [("dns_B_tol1e-3", "DNS B, tol 1e-3"), ("dns_B_tol1e-4", "DNS B, tol 1e-4"),
                       ("dns_B", "DNS B, tol 1e-5 (dns.prm)"), ("mesh_2x4", "2x4 multiscale")],
 }

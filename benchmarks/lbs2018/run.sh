@@ -5,6 +5,8 @@
 #   mesh_1x1 mesh_1x2 mesh_2x4 mesh_4x8   mesh convergence (mesh_2x4 is also
 #                                         the reference of every study:
 #                                         friction 0.4, free rotation, lbs_ref)
+#   mesh_4x8_steps22                      4x8 with stage 2 in 0.25 % steps to
+#                                         5.5 % (load-step check of the peak)
 #   dns_A dns_B                           direct numerical simulations
 #   dns_B_tol1e-3 dns_B_tol1e-4           DNS B with looser relaxation
 #                                         tolerances (dns.prm: 1e-5)
@@ -23,10 +25,10 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 source "$root/benchmarks/common.sh"
 build="$root/build" np=2
-all_cases=(mesh_1x1 mesh_1x2 mesh_2x4 mesh_4x8 dns_A dns_B dns_B_tol1e-3 dns_B_tol1e-4
+all_cases=(mesh_1x1 mesh_1x2 mesh_2x4 mesh_4x8 mesh_4x8_steps22 dns_A dns_B dns_B_tol1e-3 dns_B_tol1e-4
            mu0.2 mu0.6 locked a005 a008)
 
-usage() { sed -n '4,18p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 2; }
+usage() { sed -n '4,20p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 2; }
 cases=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
@@ -50,6 +52,9 @@ mkdir -p runs results
 overrides() {
   local cells
   case "$1" in
+    mesh_4x8_steps22)
+      printf 'subsection Geometry\n  set Cells x = 4\n  set Cells y = 8\nend\n'
+      printf 'subsection Loading\n  set Load steps = 22\n  set Axial strain = 0.055\nend\n' ;;
     mesh_*) cells=${1#mesh_}; printf 'subsection Geometry\n  set Cells x = %s\n  set Cells y = %s\nend\n' "${cells%x*}" "${cells#*x}" ;;
     mu*) printf 'subsection RVE\n  set Friction = %s\nend\n' "${1#mu}" ;;
     locked) printf 'subsection RVE\n  set Rotation = locked\nend\n' ;;

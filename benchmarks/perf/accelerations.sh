@@ -13,6 +13,11 @@
 #   skip1e-5), mtsN (check10 + multiple time stepping: at most N DEM steps
 #   per RVE and DR iteration until (M9) first holds, e.g. mts50).
 #   Default: the first six.
+# ACCEL_WORKDIR=DIR keeps each run in DIR/MESH_SETTING with a checkpoint
+# after every load step, and a later call with the same DIR resumes it
+# (`fe2dem --resume`): for runs longer than one sitting, such as strict on
+# 2x4. Stop one with `kill -TERM` on its fe2dem processes (status
+# "stopped"); the wall time printed is that of the last sitting.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -35,17 +40,32 @@ overrides() {
 }
 mkdir -p "$here/results"
 for s in "${settings[@]}"; do
-  work="$(mktemp -d)"
+  if [[ -n "${ACCEL_WORKDIR:-}" ]]; then
+    work="$(realpath -m "$ACCEL_WORKDIR")/${mesh}_$s"
+    mkdir -p "$work"
+  else
+    work="$(mktemp -d)"
+  fi
+  resume=() log="$here/results/accel_${mesh}_$s.log"
+  if compgen -G "$work/out/checkpoints/checkpoint-*.h5" > /dev/null; then
+    resume=(--resume)
+    echo "accelerations.sh: resuming $work from its newest checkpoint" >> "$log"
+  else
+    : > "$log"
+  fi
   { sed "s#^set Output directory.*#set Output directory = $work/out#; s#\.\./\.\./rve_templates#$root/rve_templates#" \
-      "$root/dealii_app/examples/biaxial_$mesh.prm"; overrides "$s"; } > "$work/case.prm"
-  start=$(date +%s.%N)
+      "$root/dealii_app/examples/biaxial_$mesh.prm"; overrides "$s"
+    [[ -z "${ACCEL_WORKDIR:-}" ]] || printf 'subsection Checkpoint\n  set Every = 1\nend\n'; } > "$work/case.prm"
+  start=$(date +%s.%N) from=$(( $(wc -l < "$log") + 1 ))
   status=completed
   mpirun --allow-run-as-root --oversubscribe -np 2 "$build/dealii_app/solver/fe2dem" "$work/case.prm" \
-    > "$here/results/accel_${mesh}_$s.log" 2>&1 || status=stopped
+    "${resume[@]}" >> "$log" 2>&1 || status=stopped
+  # SIGTERM makes fe2dem write a checkpoint and exit 0
+  ! tail -n "+$from" "$log" | grep -q "and stopped\.\$" || status=stopped
   wall=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN {printf "%.1f", e - s}')
   mkdir -p "$here/results/accel_${mesh}_$s"
   cp "$work/out/summary.csv" "$here/results/accel_${mesh}_$s/"
-  rm -rf "$work"
+  [[ -n "${ACCEL_WORKDIR:-}" ]] || rm -rf "$work"
   line=$(/usr/bin/python3 "$here/compare_curves.py" "$here/results/accel_${mesh}_$s/summary.csv" \
            "$here/results/accel_${mesh}_strict/summary.csv")
   echo "${mesh}_${s}_status $status -"

@@ -340,10 +340,11 @@ def main():
     for dns in ["dns_B", "dns_B_tol1e-3", "dns_B_tol1e-4"]:
         if not curves.get(dns):
             continue
-        spread = pre_peak_spread(curves, meshes + [dns], "prepeak_spread%s.csv" % dns[len("dns_B"):])
+        suffix = dns[len("dns_B"):]
+        spread = pre_peak_spread(curves, meshes + [dns], f"prepeak_spread{suffix}.csv")
         if spread:
             (s, e), have = spread
-            print(f"\npre_peak_stress_ratio_spread{dns[len('dns_B'):]} {s:.4f} 1  (largest (max-min)/mean "
+            print(f"\npre_peak_stress_ratio_spread{suffix} {s:.4f} 1  (largest (max-min)/mean "
                   f"over {', '.join(have)} at axial strain <= {PRE_PEAK:g}; at {e})")
     total = sum(float(r["wall_s"]) for r in info.values())
     print(f"suite_wall {total:.0f} s  ({len(info)} cases in results/runs.csv)")

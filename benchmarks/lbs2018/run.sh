@@ -52,10 +52,10 @@ mkdir -p runs results
 overrides() {
   local cells
   case "$1" in
-    mesh_4x8_steps22)
-      printf 'subsection Geometry\n  set Cells x = 4\n  set Cells y = 8\nend\n'
-      printf 'subsection Loading\n  set Load steps = 22\n  set Axial strain = 0.055\nend\n' ;;
-    mesh_*) cells=${1#mesh_}; printf 'subsection Geometry\n  set Cells x = %s\n  set Cells y = %s\nend\n' "${cells%x*}" "${cells#*x}" ;;
+    mesh_*)
+      cells=${1#mesh_}; cells=${cells%%_*}
+      printf 'subsection Geometry\n  set Cells x = %s\n  set Cells y = %s\nend\n' "${cells%x*}" "${cells#*x}"
+      [[ $1 != *_steps22 ]] || printf 'subsection Loading\n  set Load steps = 22\n  set Axial strain = 0.055\nend\n' ;;
     mu*) printf 'subsection RVE\n  set Friction = %s\nend\n' "${1#mu}" ;;
     locked) printf 'subsection RVE\n  set Rotation = locked\nend\n' ;;
     a005|a008) printf 'subsection RVE\n  set Packing = ../../rve_templates/packings/lbs_%s\nend\n' "$1" ;;

@@ -17,6 +17,7 @@
 #include "rve_pool.h"
 
 #include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
@@ -90,7 +91,29 @@ private:
   void finish_isotropic_stage();
   /// Mean vertical displacement of the top edge's nodes.
   double mean_top_displacement() const;
+
+  // --- output of a converged load step (explicit_solver_output.cpp) --------
+  /// What one converged step writes: means over the IPs, cell averages, records.
+  struct StepStatistics
+  {
+    double ratio_mean = 0.0, ratio_min = 0.0, ratio_max = 0.0; ///< |σ11-σ22|/|σ11+σ22|
+    double s11_mean = 0.0, s22_mean = 0.0, j_rel_mean = 0.0;   ///< Cauchy stress, (J-J_ic)/J_ic
+    double coordination_mean = 0.0, anisotropy_mean = 0.0;
+    /// Per cell, the average over its quadrature points (VTU cell data).
+    dealii::Vector<double> s11, s22, ratio, j_rel, coordination, anisotropy, eq_strain;
+    std::vector<IpRecord> records; ///< one per IP, for history.h5
+  };
   void output_step(unsigned int iterations);
+  /// Also moves every IP's F_last_step to its current F.
+  StepStatistics gather_step_statistics();
+  /// Vertical reaction of the top edge, and the largest deviation of the
+  /// displacement from the affine field relative to the largest affine
+  /// displacement (only with `Boundary = affine`, else 0).
+  std::pair<double, double> top_reaction_and_affine_deviation() const;
+  void write_summary_row(const StepStatistics& stats, unsigned int iterations, double axial,
+                         const std::pair<double, double>& reaction_and_deviation,
+                         const dealii::Utilities::MPI::MinMaxAvg& rve_seconds);
+  void write_vtu(const StepStatistics& stats);
   void open_output_files(const std::string& checkpoint);
 
   // --- checkpoints (explicit_solver_checkpoint.cpp) -------------------------

@@ -106,12 +106,16 @@ private:
   void output_step(unsigned int iterations);
   /// Also moves every IP's F_last_step to its current F.
   StepStatistics gather_step_statistics();
-  /// Vertical reaction of the top edge, and the largest deviation of the
-  /// displacement from the affine field relative to the largest affine
-  /// displacement (only with `Boundary = affine`, else 0).
-  std::pair<double, double> top_reaction_and_affine_deviation() const;
+  struct EdgeResponse
+  {
+    double top_reaction = 0.0; ///< vertical internal force summed over the top edge
+    /// Largest deviation of the displacement from the affine field relative to
+    /// the largest affine displacement (only with `Boundary = affine`, else 0).
+    double affine_deviation = 0.0;
+  };
+  EdgeResponse top_reaction_and_affine_deviation() const;
   void write_summary_row(const StepStatistics& stats, unsigned int iterations, double axial,
-                         const std::pair<double, double>& reaction_and_deviation,
+                         const EdgeResponse& edges,
                          const dealii::Utilities::MPI::MinMaxAvg& rve_seconds);
   void write_vtu(const StepStatistics& stats);
   void open_output_files(const std::string& checkpoint);

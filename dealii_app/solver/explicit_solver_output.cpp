@@ -18,7 +18,7 @@ template <int dim>
 void ExplicitSolver<dim>::output_step(unsigned int iterations)
 {
   const StepStatistics stats = gather_step_statistics();
-  const auto reaction_and_deviation = top_reaction_and_affine_deviation();
+  const EdgeResponse edges = top_reaction_and_affine_deviation();
   const double axial = stage_ == 2 ? (u_top_ic_ - mean_top_displacement()) / h_ic_ : 0.0;
   write_particle_dumps();
   // Load balance: RVE seconds of the busiest and of the mean rank (collective).
@@ -26,7 +26,7 @@ void ExplicitSolver<dim>::output_step(unsigned int iterations)
   if (rank_ != 0)
     return;
   history_file_->append(static_cast<int>(step_), axial, stats.records);
-  write_summary_row(stats, iterations, axial, reaction_and_deviation, rve_seconds);
+  write_summary_row(stats, iterations, axial, edges, rve_seconds);
   write_vtu(stats);
 }
 
@@ -96,7 +96,7 @@ typename ExplicitSolver<dim>::StepStatistics ExplicitSolver<dim>::gather_step_st
 }
 
 template <int dim>
-std::pair<double, double> ExplicitSolver<dim>::top_reaction_and_affine_deviation() const
+typename ExplicitSolver<dim>::EdgeResponse ExplicitSolver<dim>::top_reaction_and_affine_deviation() const
 {
   double top_force = 0.0, dev = 0.0, scale = 0.0;
   Tensor<2, dim> F_affine = unit_symmetric_tensor<dim>();
@@ -117,7 +117,7 @@ std::pair<double, double> ExplicitSolver<dim>::top_reaction_and_affine_deviation
 template <int dim>
 void ExplicitSolver<dim>::write_summary_row(const StepStatistics& st, unsigned int iterations,
                                             double axial,
-                                            const std::pair<double, double>& reaction_and_deviation,
+                                            const EdgeResponse& edges,
                                             const Utilities::MPI::MinMaxAvg& rve_seconds)
 {
   const double wall = MPI_Wtime() - t_start_;
@@ -126,7 +126,7 @@ void ExplicitSolver<dim>::write_summary_row(const StepStatistics& st, unsigned i
       << axial << ',' << st.ratio_mean << ',' << st.ratio_min << ',' << st.ratio_max << ','
       << st.s11_mean << ',' << st.s22_mean << ',' << st.j_rel_mean << ',' << st.coordination_mean
       << ',' << st.anisotropy_mean << ',' << iterations << ',' << dem_steps_in_step_ << ',' << wall
-      << ',' << reaction_and_deviation.first << ',' << reaction_and_deviation.second << ','
+      << ',' << edges.top_reaction << ',' << edges.affine_deviation << ','
       << rve_solves_in_step_ << ',' << rve_seconds.max << ',' << rve_seconds.avg << '\n';
   summary_rows_ += row.str();
   summary_ << row.str() << std::flush;

@@ -11,6 +11,7 @@
 #include "group.h"
 #include "input.h"
 #include "modify.h"
+#include "neighbor.h"
 #include "update.h"
 #include "variable.h"
 
@@ -27,6 +28,7 @@ using namespace fe2dem;
 namespace
 {
 double sign(double v) { return (v > 0.0) - (v < 0.0); }
+constexpr int max_groups = 32; // MAX_GROUP of LIGGGHTS' group.cpp (not in a header)
 } // namespace
 
 FixRveServo::FixRveServo(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg)
@@ -67,6 +69,8 @@ void FixRveServo::post_create()
   {
     for (const auto& p : frame_.particles)
       frame_local_.push_back(local_index(p.tag)); // all frame particles are there
+    exclude_duplicate_contacts();
+    map_physical_particles();
     create_contacts_compute();
     return;
   }
@@ -127,7 +131,53 @@ void FixRveServo::post_create()
   for (std::size_t q = 0; q < nq; ++q)
     frame_local_[q] = local_index(frame_.particles[q].tag);
   frame_moment_.assign(nq, 0.0);
+  exclude_duplicate_contacts();
+  map_physical_particles();
   create_contacts_compute();
+}
+
+// One physical contact, one count (physics.md §2.1, rve_frame.h
+// duplicate_contact): the +Lx images of the frame go into group ID_image_x,
+// the +Ly images into ID_image_y, and LIGGGHTS' neighbour lists leave out
+// every pair inside one of these groups. The pair style then never sees the
+// second copy of a contact, so the frame forces a_q, P, the servo residual,
+// Love-Weber, E_pot, LIGGGHTS' own virial and the statistics hold it once.
+// Groups live in restart files; the exclusion does not and is set again.
+void FixRveServo::exclude_duplicate_contacts()
+{
+  const std::pair<const char*, bool FrameParticle::*> images[] = {{"_image_x", &FrameParticle::image_x},
+                                                                  {"_image_y", &FrameParticle::image_y}};
+  for (const auto& [suffix, is_image] : images)
+  {
+    std::vector<int> flag(atom->nlocal, 0);
+    for (const FrameParticle& p : frame_.particles)
+      if (p.*is_image)
+        flag[local_index(p.tag)] = 1;
+    std::string name = std::string(id) + suffix;
+    if (group->find(name.c_str()) < 0 && group->ngroup >= max_groups)
+      error->fix_error(FLERR, this, ("needs two free groups for the frame images, but the script "
+                                     "already defines " + std::to_string(group->ngroup) +
+                                     " groups: delete unused groups").c_str());
+    group->create(name.c_str(), flag.data());
+    std::string words[] = {"exclude", "group", name, name};
+    char* argv[] = {&words[0][0], &words[1][0], &words[2][0], &words[3][0]};
+    neighbor->modify_params(4, argv);
+  }
+}
+
+// Frame images are one physical particle: both members of an edge pair map
+// to the minus member, the four corners to corner (0,0). Coordination and
+// rattlers are counted over these physical particles.
+void FixRveServo::map_physical_particles()
+{
+  physical_of_.resize(n_particles_);
+  for (int k = 0; k < n_particles_; ++k)
+    physical_of_[k] = k;
+  auto dense = [&](int q) { return tag_to_dense_[frame_.particles[q].tag]; };
+  for (const auto& pr : frame_.pairs)
+    physical_of_[dense(pr[1])] = dense(pr[0]);
+  for (int c : frame_.corners)
+    physical_of_[dense(c)] = dense(frame_.corners[0]);
 }
 
 void FixRveServo::check_reference_overlaps()

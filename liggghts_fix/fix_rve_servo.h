@@ -176,6 +176,10 @@ private:
 
   // --- helpers ------------------------------------------------------------
   int local_index(int tag) const;
+  /// Leaves the second copy of every frame-frame contact out of LIGGGHTS' neighbour lists.
+  void exclude_duplicate_contacts();
+  /// Fills physical_of_ from the frame topology (frame images -> one particle).
+  void map_physical_particles();
   void collect_contacts();
   void create_contacts_compute();
   template <class Stream>
@@ -282,7 +286,8 @@ private:
   std::string contacts_compute_id_;
   std::vector<fe2dem::Contact> contacts_;
   std::vector<int> tag_to_dense_;
-  int n_particles_ = 0;
+  int n_particles_ = 0;           ///< RVE bodies (frame images counted separately)
+  std::vector<int> physical_of_;  ///< dense index -> dense index of its physical particle
   int n_inner_ = 0;
   int checks_since_contact_pass_ = 0;
   double dtv_ = 0.0, dtf_ = 0.0;

@@ -18,7 +18,7 @@ using namespace fe2dem;
 namespace
 {
 constexpr std::uint32_t state_magic = 0x46453244; // "FE2D"
-constexpr std::uint32_t state_version = 2; // 2: Result::membrane_steps
+constexpr std::uint32_t state_version = 3; // 2: Result::membrane_steps; 3: image flags
 } // namespace
 
 // The one list of everything a restart must carry, used to write and read.

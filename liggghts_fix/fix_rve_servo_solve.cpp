@@ -217,7 +217,7 @@ void FixRveServo::homogenise(double ekin)
   checks_since_contact_pass_ = 0;
   Result& r = result_;
   collect_contacts();
-  r.contacts = fe2dem::contact_statistics(contacts_, n_particles_, law_);
+  r.contacts = fe2dem::contact_statistics(contacts_, physical_of_, law_);
   const double V0 = frame_.reference_volume(), J = fe2dem::det(F_);
   r.F = F_;
   r.P = fe2dem::boundary_piola(frame_, frame_force_);

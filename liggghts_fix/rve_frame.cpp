@@ -172,6 +172,18 @@ FrameTopology build_frame_topology(const std::vector<int>& tags, const std::vect
   for (int k = nl - 1; k >= 0; --k)
     frame.pairs[nb + k][0] = add(edges.left[k].second, FrameRole::edge_minus, nb + k);
 
+  for (int e = 0; e < nb + nl; ++e)
+  {
+    FrameParticle& image = frame.particles[frame.pairs[e][1]];
+    if (e < nb)
+      image.image_y = true; // top member of a bottom/top pair
+    else
+      image.image_x = true; // right member of a left/right pair
+  }
+  frame.particles[frame.corners[1]].image_x = true;
+  frame.particles[frame.corners[2]].image_x = frame.particles[frame.corners[2]].image_y = true;
+  frame.particles[frame.corners[3]].image_y = true;
+
   set_area_vectors(frame);
   return frame;
 }

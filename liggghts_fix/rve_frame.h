@@ -32,7 +32,26 @@ struct FrameParticle
   FrameRole role = FrameRole::corner;
   int pair = -1;         ///< edge-pair index, -1 for corners
   Vec2 area_vector{};    ///< A_q of (R1), outward, length = area (2D: length)
+  /// Periodic-image flags: image_x = this particle is the +Lx image of another
+  /// frame particle (right edge, corners (Lx,0) and (Lx,Ly)); image_y = the
+  /// +Ly image (top edge, corners (0,Ly) and (Lx,Ly)).
+  bool image_x = false, image_y = false;
 };
+
+/**
+ * One physical contact, one count (physics.md §2.1). Two frame particles
+ * that are both +Lx images (or both +Ly images) touch only as the copy of
+ * the contact between their originals, which the RVE also holds with the
+ * same geometry: the frame keeps every fluctuation and rotation periodic,
+ * so the two copies carry the same force. Such a contact must be left out.
+ * Every other contact of the RVE is the only copy of its periodic contact:
+ * a copy at -Lx (or -Ly) exists only if both particles have an image
+ * there, and no particle has more than two images along one axis.
+ */
+inline bool duplicate_contact(const FrameParticle& a, const FrameParticle& b)
+{
+  return (a.image_x && b.image_x) || (a.image_y && b.image_y);
+}
 
 struct FrameTopology
 {

@@ -4,12 +4,16 @@
 
 namespace fe2dem
 {
-ContactStatistics contact_statistics(const std::vector<Contact>& contacts, int n_particles,
-                                     const ContactLaw& law)
+ContactStatistics contact_statistics(const std::vector<Contact>& contacts,
+                                     const std::vector<int>& particle_of, const ContactLaw& law)
 {
   ContactStatistics s;
   s.n_sliding = law.friction >= 0.0 ? 0 : -1;
-  std::vector<int> count(n_particles, 0);
+  const int n_bodies = static_cast<int>(particle_of.size());
+  int n_particles = 0;
+  for (int p = 0; p < n_bodies; ++p)
+    n_particles += particle_of[p] == p;
+  std::vector<int> count(n_bodies, 0); // contacts per physical particle
   std::vector<const Contact*> active;
   active.reserve(contacts.size());
   double overlap_sum = 0.0;
@@ -21,8 +25,8 @@ ContactStatistics contact_statistics(const std::vector<Contact>& contacts, int n
     if (overlap <= 0.0 || d == 0.0)
       continue;
     active.push_back(&c);
-    ++count[c.i];
-    ++count[c.j];
+    ++count[particle_of[c.i]];
+    ++count[particle_of[c.j]];
     const Vec2 n = (1.0 / d) * l;
     s.fabric = s.fabric + outer(n, n);
     s.love_weber_sum = s.love_weber_sum + outer(c.force_on_i, l);
@@ -50,13 +54,17 @@ ContactStatistics contact_statistics(const std::vector<Contact>& contacts, int n
   if (n_particles > 0)
     s.coordination = 2.0 * s.n_contacts / n_particles;
 
-  // Mechanical coordination: drop rattlers (< 2 contacts) and their contacts.
-  int n_mech = 0, c_mech = 0;
-  for (int p = 0; p < n_particles; ++p)
-    n_mech += count[p] >= 2;
-  for (const Contact* c : active)
-    c_mech += count[c->i] >= 2 && count[c->j] >= 2;
-  s.mechanical_coordination = n_mech > 0 ? 2.0 * c_mech / n_mech : 0.0;
+  // Mechanical coordination (Thornton): without the N0 particles with no
+  // contact and the N1 with one, (2C - N1) / (N - N0 - N1).
+  int n0 = 0, n1 = 0;
+  for (int p = 0; p < n_bodies; ++p)
+    if (particle_of[p] == p)
+    {
+      n0 += count[p] == 0;
+      n1 += count[p] == 1;
+    }
+  s.mechanical_coordination =
+    n_particles - n0 - n1 > 0 ? (2.0 * s.n_contacts - n1) / (n_particles - n0 - n1) : 0.0;
   return s;
 }
 

@@ -35,8 +35,8 @@ struct ContactLaw
 struct ContactStatistics
 {
   int n_contacts = 0;              ///< C: pairs with positive overlap
-  double coordination = 0.0;       ///< 2C/N over all N particles
-  double mechanical_coordination = 0.0; ///< same without rattlers (< 2 contacts)
+  double coordination = 0.0;       ///< 2C/N over the N physical particles
+  double mechanical_coordination = 0.0; ///< (2C - N1)/(N - N0 - N1), N0/N1: particles with 0/1 contacts
   Mat2 fabric{0, 0, 0, 0};         ///< Pi = (1/C) sum_c n_c (x) n_c
   double anisotropy = 0.0;         ///< Pi_1/Pi_2 - 1
   Mat2 love_weber_sum{0, 0, 0, 0}; ///< sum_c f_c (x) l_c, l_c = x_j - x_i (divide by volume)
@@ -49,11 +49,16 @@ struct ContactStatistics
 
 /**
  * Love-Weber sums, fabric, coordination and energies of a contact list.
- * @param contacts      contacts with positive or zero overlap (others are skipped)
- * @param n_particles   N for the coordination number
+ * @param contacts     contacts with positive or zero overlap (others are skipped),
+ *                     each physical contact once
+ * @param particle_of  for each particle index of Contact::i, j: the index of the
+ *                     physical particle it is a copy of (frame images of one
+ *                     particle share one index); p is a physical particle iff
+ *                     particle_of[p] == p. Coordination 2C/N and rattlers count
+ *                     physical particles.
  */
-ContactStatistics contact_statistics(const std::vector<Contact>& contacts, int n_particles,
-                                     const ContactLaw& law);
+ContactStatistics contact_statistics(const std::vector<Contact>& contacts,
+                                     const std::vector<int>& particle_of, const ContactLaw& law);
 
 /**
  * (R6) P = (1/V0) sum_q a_q (x) X_q.

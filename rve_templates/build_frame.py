@@ -29,7 +29,9 @@ Outputs (``--outdir``, default: the input's folder):
 ``NAME.frame.txt``   frame particles: rve id, role, pair, periodic id, X, Y, R.
 
 Statistics are computed on the periodic packing (minimum image): coordination
-2C/N over contacts with overlap > 0, mechanical coordination
+2C/N over contacts with overlap > 0, each physical particle and contact once
+(the RVE's contacts are checked to be exactly these once the second copies of
+frame-frame contacts are left out, as fix rve/servo does), mechanical coordination
 (2C - N1)/(N - N0 - N1) (N0, N1 = particles with 0 and 1 contacts), fabric
 Pi = (1/C) sum_c n_c (x) n_c, anisotropy A = Pi_1/Pi_2 - 1, overlaps.
 
@@ -378,8 +380,17 @@ def build(args):
         fail(f"{path}: internal error: {missing} periodic contact(s) are not represented in "
              "the RVE frame. Please report this with the packing file.")
 
-    # --- contacts inside the (non-periodic) RVE, for cross-checks in the DEM code
-    c_rve = 0
+    # --- contacts inside the (non-periodic) RVE. Two bodies that are both +Lx
+    #     images (or both +Ly images) touch only as the second copy of the
+    #     contact between their originals: fix rve/servo leaves such pairs out
+    #     of LIGGGHTS' neighbour lists (rve_frame.h, duplicate_contact), so each
+    #     physical contact is counted once. Check that this leaves exactly the
+    #     periodic contacts.
+    image_x_roles = {"right", "corner_L0", "corner_LL"}
+    image_y_roles = {"top", "corner_0L", "corner_LL"}
+    flags = [(False, False)] * len(inner) + [(role in image_x_roles, role in image_y_roles)
+                                              for (_, role, _, _, _) in frame]
+    c_rve = c_dup = 0
     bx_cells = {}
     h = 2.0 * rmax
     for b, (k, t, X, Y) in enumerate(bodies):
@@ -394,7 +405,13 @@ def build(args):
                         k1, _, X1, Y1 = bodies[b1]
                         k2, _, X2, Y2 = bodies[b2]
                         if math.hypot(X2 - X1, Y2 - Y1) < rad[k1] + rad[k2]:
-                            c_rve += 1
+                            duplicate = ((flags[b1][0] and flags[b2][0]) or
+                                         (flags[b1][1] and flags[b2][1]))
+                            c_dup += duplicate
+                            c_rve += not duplicate
+    if c_rve != len(contacts):
+        fail(f"{path}: internal error: the RVE holds {c_rve} contacts (each once) but the periodic "
+             f"packing {len(contacts)}. Please report this with the packing file.")
 
     # --- statistics
     C = len(contacts)
@@ -469,7 +486,8 @@ def build(args):
         ("overlap_max_over_R_mean", f"{ovmax / rmean:.5g}"),
         ("overlap_mean_over_R_mean", f"{(ovsum / C if C else 0.0) / rmean:.5g}"),
         ("frame_contacts_missing", missing),
-        ("n_contacts_rve_nonperiodic", c_rve),
+        ("n_contacts_rve", c_rve),
+        ("n_contacts_rve_second_copies", c_dup),
     ]
     if abs(phi - phi_periodic) > 1e-9:
         fail(f"{path}: internal error: packing fraction of the frame {phi} differs from the "

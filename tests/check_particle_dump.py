@@ -5,7 +5,8 @@ Usage: check_particle_dump.py OUTPUT_DIR IP STEP [OTHER_OUTPUT_DIR]
 For IP at load STEP: the dump files exist and parse, every contact joins two
 listed particles at their listed centres, fn > 0 (the dump lists touching
 pairs, which carry compression), and 2 C / N equals the coordination in
-history.h5 (same contact count). With OTHER_OUTPUT_DIR the files must be
+history.h5 (same contact count; N counts each physical particle once: the
+inner particles, one per edge pair of frame images and one corner). With OTHER_OUTPUT_DIR the files must be
 byte-identical there (rank-count independence).
 """
 import filecmp
@@ -43,9 +44,11 @@ for c in contacts:
 with h5py.File(f"{out}/history.h5", "r") as h:
     row = list(h["step"][:]).index(step)
     coordination = h["coordination"][row, ip]
-z = 2.0 * len(contacts) / len(particles)
-print(f"{prefix}: {len(particles)} particles ({sum(p['frame'] for p in particles.values()):.0f} "
-      f"frame), {len(contacts)} contacts, 2C/N = {z:.6f}, history.h5 coordination = {coordination:.6f}")
+n_frame = round(sum(p["frame"] for p in particles.values()))
+n_physical = len(particles) - n_frame + (n_frame - 4) // 2 + 1
+z = 2.0 * len(contacts) / n_physical
+print(f"{prefix}: {len(particles)} particles ({n_frame} frame, {n_physical} physical), "
+      f"{len(contacts)} contacts, 2C/N = {z:.6f}, history.h5 coordination = {coordination:.6f}")
 if abs(z - coordination) > 1e-12:
     failures.append(f"2C/N = {z} differs from history.h5 coordination {coordination}")
 if len(sys.argv) > 4:

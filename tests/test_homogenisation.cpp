@@ -86,11 +86,11 @@ int main()
   c[1] = {1, 2, {1.9, 0}, {1.9, 1.9}, 1.0, 1.0, {0.0, -20.0}}; // overlap 0.1
   c[2] = {0, 2, {0, 0}, {1.9, 1.9}, 1.0, 1.0, {0.0, 0.0}};     // no overlap: skipped
   ContactLaw law{100.0, 50.0, 0.1};
-  const ContactStatistics st = contact_statistics(c, 4, law);
+  const ContactStatistics st = contact_statistics(c, {0, 1, 2, 3}, law);
   check.equal_ints("contacts", {st.n_contacts}, {2});
   check.near("coordination 2C/N", st.coordination, 1.0, 1e-15);
-  // Without the rattler (3) and particle 0 and 2 (one contact each), only 1 remains: 0 contacts.
-  check.near("mechanical coordination", st.mechanical_coordination, 0.0, 1e-15);
+  // Thornton: N0 = 1 (particle 3), N1 = 2 (0 and 2): (2*2 - 2) / (4 - 1 - 2) = 2.
+  check.near("mechanical coordination", st.mechanical_coordination, 2.0, 1e-15);
   // Fabric: n = (1,0) and (0,1): Pi = diag(1/2, 1/2), A = 0.
   check.near("fabric 11", st.fabric[0], 0.5, 1e-15);
   check.near("anisotropy", st.anisotropy, 0.0, 1e-12);
@@ -104,6 +104,36 @@ int main()
   check.equal_ints("sliding contacts", {st.n_sliding}, {1});
   check.near("max overlap / R", st.max_overlap, 0.1, 1e-12);
   check.near("anisotropy of diag(0.6,0.4)", fabric_anisotropy({0.6, 0.0, 0.0, 0.4}), 0.5, 1e-15);
+
+  // Frame images are one physical particle: body 4 is an image of particle 0
+  // and touches particle 3. Physical: N = 4, C = 3, coordination 1.5;
+  // contacts per particle 2, 2, 1, 1: N0 = 0, N1 = 2, (6 - 2) / (4 - 2) = 2.
+  c.push_back({4, 3, {5, 0}, {6.9, 0}, 1.0, 1.0, {-10.0, 0.0}});
+  const ContactStatistics si = contact_statistics(c, {0, 1, 2, 3, 0}, law);
+  check.near("coordination over physical particles", si.coordination, 1.5, 1e-15);
+  check.near("mechanical coordination over physical particles", si.mechanical_coordination, 2.0, 1e-15);
+  // Counted as five bodies (the old bookkeeping): N = 5, and with one contact
+  // each, bodies 0, 2, 3, 4 make N1 = 4: (6 - 4) / (5 - 4) = 2, 2C/N = 1.2.
+  const ContactStatistics sb = contact_statistics(c, {0, 1, 2, 3, 4}, law);
+  check.near("coordination over bodies differs", sb.coordination, 1.2, 1e-15);
+
+  // Image flags: right and top members and the corners (Lx,0), (Lx,Ly), (0,Ly).
+  // Frame order: c00, bottom, c10, right, c11, top, c01, left.
+  std::vector<int> flags_x, flags_y;
+  for (const auto& p : frame.particles)
+  {
+    flags_x.push_back(p.image_x);
+    flags_y.push_back(p.image_y);
+  }
+  check.equal_ints("image_x flags", flags_x, {0, 0, 1, 1, 1, 0, 0, 0});
+  check.equal_ints("image_y flags", flags_y, {0, 0, 0, 0, 1, 1, 1, 0});
+  // Only pairs of images along one axis are duplicates: right-right, right-c10,
+  // top-c01, c11-top; a right-top contact near (Lx,Ly) is the only copy.
+  const auto& fp = frame.particles;
+  check.truth("right and corner (Lx,0) duplicate", duplicate_contact(fp[3], fp[2]), "");
+  check.truth("top and corner (0,Ly) duplicate", duplicate_contact(fp[5], fp[6]), "");
+  check.truth("right and top not duplicate", !duplicate_contact(fp[3], fp[5]), "");
+  check.truth("left and corner (0,0) not duplicate", !duplicate_contact(fp[7], fp[0]), "");
 
   // Bad frames give messages naming the particle.
   check.throws_with("unpaired edge particle",

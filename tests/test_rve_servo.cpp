@@ -1,6 +1,7 @@
 // Physics checks of fix rve/servo through real LIGGGHTS instances.
 // Usage: test_rve_servo CASE TEMPLATE PACKING_PREFIX
-//   CASE: servo | agreement | hill_mandel | objectivity | rotation
+//   CASE: servo | agreement | hill_mandel | objectivity | rotation | unbalanced | budget |
+//         frozen_inner | contact_count | lattice
 #include "check.h"
 #include "servo_rve.h"
 
@@ -10,8 +11,12 @@
 
 #include <mpi.h>
 
+#include "compute.h"
+#include "modify.h"
+
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <iostream>
 #include <map>
 
@@ -225,6 +230,166 @@ void check_unbalanced(Checker& check)
   check.less("|sigma - sigma_LW| / |sigma_LW| < 1 %", rel(r.sigma, r.sigma_lw), 0.01);
 }
 
+/// `key value` lines of the PREFIX.stats.txt written by build_frame.py.
+std::map<std::string, std::string> packing_stats()
+{
+  std::ifstream in(packing + ".stats.txt");
+  std::map<std::string, std::string> stats;
+  std::string key, value;
+  while (in >> key >> value)
+    stats[key] = value;
+  if (stats.empty())
+    throw std::runtime_error("cannot read " + packing + ".stats.txt");
+  return stats;
+}
+
+/// One physical contact, one count: the RVE as built holds exactly the
+/// contacts of the periodic packing, counted independently by build_frame.py
+/// on the periodic packing (minimum image), and the fix's statistics on that
+/// state equal build_frame.py's: coordination over physical particles,
+/// mechanical coordination, fabric.
+void check_contact_count(Checker& check)
+{
+  const auto stats = packing_stats();
+  const int periodic_contacts = std::stoi(stats.at("n_contacts"));
+  const auto stat = [&](const char* key) { return std::stod(stats.at(key)); };
+  // The fix's statistics of the packing as built: inner particles frozen, the
+  // frame at rest under F = I, and the first check (one step) accepted.
+  RveSetup s = setup("free", {{"check_every", "1"}, {"relax_tol", "1e30"}, {"servo_tol", "1e30"}});
+  LiggghtsInstance lmp(MPI_COMM_SELF, log_file);
+  for (const auto& [k, v] : s.variables)
+    lmp.set_variable(k, v);
+  lmp.file(s.template_file);
+  lmp.command("velocity inner set 0 0 0");
+  lmp.command("fix fe2dem_frozen inner freeze");
+  auto& fix = lmp.fix<LAMMPS_NS::FixRveServo>(s.fix_id);
+  fix.set_deformation(identity2());
+  lmp.command("run 1");
+  check.truth("converged at the first check", fix.status() == LAMMPS_NS::FixRveServo::converged,
+              LAMMPS_NS::FixRveServo::status_name(fix.status()));
+  auto* modify = lmp.lammps()->modify;
+  // The fix's own per-contact compute (pos id force; LIGGGHTS allows one).
+  LAMMPS_NS::Compute* pairs = modify->compute[modify->find_compute((s.fix_id + "_contacts").c_str())];
+  pairs->compute_local();
+  auto* atom = lmp.lammps()->atom;
+  int touching = 0;
+  for (int k = 0; k < pairs->size_local_rows; ++k)
+  {
+    const double* a = pairs->array_local[k];
+    const double d = std::hypot(a[3] - a[0], a[4] - a[1]);
+    touching += d < atom->radius[atom->map(static_cast<int>(a[6]))] +
+                      atom->radius[atom->map(static_cast<int>(a[7]))];
+  }
+  check.equal_ints("contacts in LIGGGHTS' neighbour lists = periodic contacts (build_frame.py)",
+                   {touching}, {periodic_contacts});
+  const auto& c = fix.result().contacts;
+  check.equal_ints("contacts of the fix = periodic contacts", {c.n_contacts}, {periodic_contacts});
+  check.near("coordination = build_frame.py's", c.coordination, stat("coordination"), 5e-5);
+  check.near("mechanical coordination = build_frame.py's", c.mechanical_coordination,
+             stat("coordination_mechanical"), 5e-5);
+  check.near("fabric 11 = build_frame.py's", c.fabric[0], stat("fabric_11"), 5e-6);
+  check.near("fabric 12 = build_frame.py's", c.fabric[1], stat("fabric_12"), 5e-6);
+  check.near("fabric 22 = build_frame.py's", c.fabric[3], stat("fabric_22"), 5e-6);
+  std::cout << "  periodic packing: " << periodic_contacts << " contacts, coordination "
+            << stats.at("coordination") << ", mechanical " << stats.at("coordination_mechanical")
+            << "; fix: " << c.n_contacts << ", " << c.coordination << ", " << c.mechanical_coordination
+            << std::endl;
+}
+
+/// `key value` lines of a file (build_frame.py statistics, make_lattice.py parameters).
+std::map<std::string, double> numbers_of(const std::string& path)
+{
+  std::ifstream in(path);
+  std::map<std::string, double> out;
+  std::string key, value;
+  while (in >> key >> value)
+    try
+    {
+      out[key] = std::stod(value);
+    }
+    catch (const std::exception&)
+    {
+    } // text values (file names) are not needed here
+  if (out.empty())
+    throw std::runtime_error("cannot read " + path);
+  return out;
+}
+
+/**
+ * Closed form of a pre-compressed triangular lattice (tests/make_lattice.py):
+ * equal discs at spacing d, normal and tangential springs kn, ks, overlap
+ * delta = 2R - d. Love's formula over the three bonds of a particle (area
+ * sqrt(3)/2 d^2) gives the pre-stress sigma0 = -p0 I, p0 = sqrt(3) kn delta / d,
+ * and, to first order in a symmetric strain eps (F = I + eps; particle
+ * rotations vanish by symmetry, bond forces rotate with the bonds):
+ *   d sigma = lambda tr(eps) I + 2 mu eps,
+ *   lambda = sqrt(3)/4 (kn - ks) + 5/4 p0,   mu = sqrt(3)/4 (kn + ks) - 3/4 p0.
+ * The p0 terms (about 3 % here) come from the rotation of the pre-stressed
+ * bonds and the change of the cell area.
+ */
+struct LatticeClosedForm
+{
+  double p0, lambda, mu;
+  LatticeClosedForm(double kn, double ks, double d, double R)
+  {
+    const double s3 = std::sqrt(3.0);
+    p0 = s3 * kn * (2.0 * R - d) / d;
+    lambda = s3 / 4.0 * (kn - ks) + 1.25 * p0;
+    mu = s3 / 4.0 * (kn + ks) - 0.75 * p0;
+  }
+};
+
+/// A regular lattice built through build_frame.py gives its closed-form
+/// pre-stress and elastic constants in both stress measures (issue 14).
+void check_lattice(Checker& check)
+{
+  const auto lat = numbers_of(packing + ".lattice.txt");
+  const double kn = 1e7, ks = 2e6;
+  const LatticeClosedForm exact(kn, ks, lat.at("spacing"), lat.at("radius"));
+  // Tight tolerances: the strain increments change contact forces by ~10 %,
+  // and 1e-3 of that needs force residuals far below (R14)'s default.
+  ServoRve rve(setup("free", {{"kn", "1e7"}, {"kt", "2e6"}, {"mu", "0.4"}, {"servo_tol", "1e-9"},
+                              {"relax_tol", "1e-12"}, {"check_every", "20"}}),
+               HistoryMode::committed);
+  const double eps = 1e-3;
+  const std::map<std::string, Mat2> sigma0 = {{"boundary", rve.result().sigma},
+                                              {"Love-Weber", rve.result().sigma_lw}};
+  std::map<std::string, std::map<std::string, Mat2>> s; // measure -> case -> sigma
+  const std::map<std::string, Mat2> cases = {{"+11", {1 + eps, 0, 0, 1}},
+                                             {"-11", {1 - eps, 0, 0, 1}},
+                                             {"+12", {1, eps, eps, 1}},
+                                             {"-12", {1, -eps, -eps, 1}}};
+  int sliding = 0;
+  for (const auto& [name, F] : cases)
+  {
+    const Result r = rve.solve(F); // each from the committed state at F = I
+    s["boundary"][name] = r.sigma;
+    s["Love-Weber"][name] = r.sigma_lw;
+    sliding += r.contacts.n_sliding;
+  }
+  check.equal_ints("no sliding contact in any case", {sliding}, {0});
+  std::cout << "  closed form: p0 = " << exact.p0 << ", lambda = " << exact.lambda
+            << ", mu = " << exact.mu << " (N/m)" << std::endl;
+  for (const auto& [measure, by_case] : s)
+  {
+    const Mat2 s0 = sigma0.at(measure);
+    const double p0 = -0.5 * (s0[0] + s0[3]);
+    // Central differences: second-order terms cancel.
+    const double l2m = (by_case.at("+11")[0] - by_case.at("-11")[0]) / (2 * eps);
+    const double lam = (by_case.at("+11")[3] - by_case.at("-11")[3]) / (2 * eps);
+    const double mu = (by_case.at("+12")[1] - by_case.at("-12")[1]) / (4 * eps);
+    std::cout << "  " << measure << ": p0 = " << p0 << " (" << (p0 / exact.p0 - 1) << "), lambda = " << lam
+              << " (" << (lam / exact.lambda - 1) << "), mu = " << mu << " (" << (mu / exact.mu - 1)
+              << "), lambda + 2 mu = " << l2m << " (" << (l2m / (exact.lambda + 2 * exact.mu) - 1) << ")"
+              << std::endl;
+    check.near(measure + " pre-stress p0 (relative)", p0 / exact.p0, 1.0, 1e-3);
+    check.near(measure + " sigma0 isotropic: sigma12 / p0", s0[1] / exact.p0, 0.0, 1e-3);
+    check.near(measure + " lambda (relative)", lam / exact.lambda, 1.0, 1e-3);
+    check.near(measure + " mu (relative)", mu / exact.mu, 1.0, 1e-3);
+    check.near(measure + " lambda + 2 mu (relative)", l2m / (exact.lambda + 2 * exact.mu), 1.0, 1e-3);
+  }
+}
+
 /// A solve over its step budget raises an error naming the reason.
 void check_budget(Checker& check)
 {
@@ -259,6 +424,8 @@ int main(int argc, char** argv)
     else if (c == "unbalanced") check_unbalanced(check);
     else if (c == "frozen_inner") check_frozen_inner(check);
     else if (c == "budget") check_budget(check);
+    else if (c == "contact_count") check_contact_count(check);
+    else if (c == "lattice") check_lattice(check);
     else check.truth("known case", false, c);
   }
   catch (const std::exception& e)

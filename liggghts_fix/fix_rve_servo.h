@@ -42,6 +42,14 @@
  * inner particles by velocity Verlet with local damping, frame particles by
  * prescribed velocities so that tangential contact history sees the motion.
  *
+ * One physical contact, one count (physics.md §2.1): a contact between two
+ * frame particles that are both +Lx images (or both +Ly images) is the second
+ * copy of the contact between their originals. The fix puts the images into
+ * groups ID_image_x and ID_image_y and excludes pairs inside each group from
+ * LIGGGHTS' neighbour lists (two of LIGGGHTS' 32 groups), so every force,
+ * stress, energy and statistic holds each physical contact once; coordination
+ * counts each physical particle once.
+ *
  * The whole fix state (reference frame, servo unknowns, frame motion, last
  * results) goes into restart files: write_restart / read_restart and
  * re-issuing the same fix command continue a solve bit for bit.

@@ -18,6 +18,11 @@
  *                              diverge with our reading of the units)
  *     relax ekin_epot|unbalanced TOL   criterion (R12) or (R13), default ekin_epot 1e-3
  *     servo_tol EPS            r_a of (R14) at convergence, default 1e-4
+ *     servo_scale inertia|contact  scale of r_a: inertia = (R14), residuals over
+ *                              M R/dt^2 and M R^2/dt^2 ([LBS]); contact = root mean
+ *                              square over pairs and corners, over the rms contact
+ *                              force f (moments over f R), so that EPS is a fraction
+ *                              of a typical contact force at any pressure. Default inertia
  *     check_every N            steps between convergence checks, default 50
  *     max_steps N              step budget of one solve, default 2000000
  *     start keep|reset         keep or reset frame fluctuations at a new F, default keep
@@ -243,6 +248,7 @@ private:
   bool criterion_unbalanced_ = false;
   double relax_tol_ = 1e-3;
   double servo_tol_ = 1e-4;
+  bool servo_scale_contact_ = false; ///< servo_scale contact (else inertia, R14)
   int check_every_ = 50;
   long max_steps_ = 2000000;
   bool keep_fluctuations_ = true;

@@ -103,6 +103,9 @@ void FixRveServo::parse_arguments(int narg, char** arg)
                  relax_tol_ = number(kw, v[1], 0.0, true);
                }}},
     {"servo_tol", {1, [&](const char* kw, char** v) { servo_tol_ = number(kw, v[0], 0.0, true); }}},
+    {"servo_scale", {1, [&](const char* kw, char** v) {
+                       servo_scale_contact_ = !choice(kw, v[0], "inertia", "contact");
+                     }}},
     {"check_every", {1, [&](const char* kw, char** v) {
                        check_every_ = static_cast<int>(number(kw, v[0], 1.0, false));
                      }}},

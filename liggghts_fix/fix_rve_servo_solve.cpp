@@ -261,27 +261,38 @@ std::string FixRveServo::describe_largest_overlap() const
 }
 
 // (R14): residuals of the anti-periodicity of frame forces and moments,
-// scaled by the force and moment that move a particle by R in one step.
+// scaled by the force and moment that move a particle by R in one step
+// (servo_scale inertia, [LBS]), or (servo_scale contact) their root mean
+// square over the pairs and the corners, in units of the root-mean-square
+// contact force f of the last contact pass (moments over R f). The inertia
+// scale M R/dt^2 is about 4e4 N for the [LBS] discs, so r_a <= 1e-4 allows a
+// pair about 4 N of imbalance whatever the pressure; the contact scale
+// bounds it as a fraction of a typical contact force.
 double FixRveServo::servo_residual() const
 {
   const double dt2 = dtv_ * dtv_;
+  const double f_rms = std::sqrt(result_.contacts.mean_force_sq);
+  auto scales = [&](int i) { // force and moment scales of frame particle i (local index)
+    const double M = atom->rmass[i], R = atom->radius[i];
+    return servo_scale_contact_ ? std::make_pair(f_rms, f_rms * R) : std::make_pair(M * R / dt2, M * R * R / dt2);
+  };
   double sum = 0.0;
   for (const auto& pr : frame_.pairs)
   {
-    const int i = local_index(frame_.particles[pr[0]].tag);
-    const double M = atom->rmass[i], R = atom->radius[i];
+    const auto [a_scale, m_scale] = scales(local_index(frame_.particles[pr[0]].tag));
     const Vec2 da = frame_force_[pr[0]] + frame_force_[pr[1]];
     const double dm = frame_moment_[pr[0]] + frame_moment_[pr[1]];
-    const double a_scale = M * R / dt2, m_scale = M * R * R / dt2;
     sum += fe2dem::dot(da, da) / (a_scale * a_scale) + (dm / m_scale) * (dm / m_scale);
   }
-  const int c = local_index(frame_.particles[frame_.corners[0]].tag);
-  const double Mc = atom->rmass[c], Rc = atom->radius[c];
   double dmc = 0.0;
   for (int k : frame_.corners)
     dmc += frame_moment_[k];
-  sum += std::pow(dmc / (Mc * Rc * Rc / dt2), 2);
-  return std::sqrt(sum);
+  sum += std::pow(dmc / scales(local_index(frame_.particles[frame_.corners[0]].tag)).second, 2);
+  if (!servo_scale_contact_)
+    return std::sqrt(sum);
+  if (!(f_rms > 0.0))
+    return std::numeric_limits<double>::infinity(); // no contact force to compare with yet
+  return std::sqrt(sum / static_cast<double>(frame_.pairs.size() + 1));
 }
 
 // Step 4 of the servo: move each pair along its net contact force (and

@@ -1,7 +1,7 @@
 // Physics checks of fix rve/servo through real LIGGGHTS instances.
 // Usage: test_rve_servo CASE TEMPLATE PACKING_PREFIX
 //   CASE: servo | agreement | hill_mandel | objectivity | rotation | unbalanced | budget |
-//         frozen_inner | contact_count | lattice
+//         frozen_inner | contact_count | lattice | servo_scale
 #include "check.h"
 #include "servo_rve.h"
 
@@ -390,6 +390,36 @@ void check_lattice(Checker& check)
   }
 }
 
+/// Root mean square of the pair imbalances |a+ + a-| over the rms contact force
+/// (mean over the pairs and the corner group, as servo_scale contact).
+double relative_imbalance(LAMMPS_NS::FixRveServo& fix)
+{
+  double sum = 0.0;
+  for (const auto& pr : fix.frame().pairs)
+  {
+    const Vec2 da = fix.frame_forces()[pr[0]] + fix.frame_forces()[pr[1]];
+    sum += dot(da, da);
+  }
+  return std::sqrt(sum / (fix.frame().pairs.size() + 1) / fix.result().contacts.mean_force_sq);
+}
+
+/// servo_scale contact: the servo tolerance bounds the pair imbalance as a
+/// fraction of the contact force, also at the packing's low pressure
+/// (about 3e4 N/m), where (R14)'s inertia scale lets it grow.
+void check_servo_scale(Checker& check)
+{
+  ServoRve by_inertia(setup());
+  const double inertia = relative_imbalance(by_inertia.fix());
+  ServoRve by_contact(setup("free", {{"servo_scale", "contact"}, {"servo_tol", "1e-3"}}));
+  const double contact = relative_imbalance(by_contact.fix());
+  std::cout << "  rms pair imbalance / rms contact force at F = I: servo_tol 1e-4 (inertia) "
+            << inertia << ", servo_tol 1e-3 (contact) " << contact << std::endl;
+  check.less("contact scale: rms force imbalance of the pairs <= 1e-3 rms contact force", contact, 1e-3);
+  check.less("contact scale: r_a reported <= servo_tol", by_contact.result().residual, 1e-3);
+  check.truth("the inertia scale allows more at this pressure", inertia > contact,
+              std::to_string(inertia) + " vs " + std::to_string(contact));
+}
+
 /// A solve over its step budget raises an error naming the reason.
 void check_budget(Checker& check)
 {
@@ -426,6 +456,7 @@ int main(int argc, char** argv)
     else if (c == "budget") check_budget(check);
     else if (c == "contact_count") check_contact_count(check);
     else if (c == "lattice") check_lattice(check);
+    else if (c == "servo_scale") check_servo_scale(check);
     else check.truth("known case", false, c);
   }
   catch (const std::exception& e)

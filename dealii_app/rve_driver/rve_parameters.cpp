@@ -76,6 +76,12 @@ void RveParameters::declare_parameters(dealii::ParameterHandler& prm)
   prm.declare_entry("Relaxation tolerance", "1e-3", Double(0.0),
                     "Tolerance of the relaxation criterion, > 0.");
   prm.declare_entry("Servo tolerance", "1e-4", Double(0.0), "Servo residual r_a (R14), > 0.");
+  prm.declare_entry("Servo residual scale", "inertia", Selection("inertia|contact"),
+                    "Scale of the servo residual: inertia = (R14), each pair's force and moment "
+                    "imbalance over M R/dt^2 and M R^2/dt^2 ([LBS]; about 4e4 N for its discs, "
+                    "whatever the pressure); contact = their root mean square over the pairs, "
+                    "over the rms contact force (moments over it times R): the tolerance is then "
+                    "a fraction of a typical contact force at any pressure.");
   prm.declare_entry("Force gain", "5", Double(0.0),
                     "Dimensionless servo gain g_a M/dt^2 ([LBS] prints 100, which diverges here).");
   prm.declare_entry("Moment gain", "10", Double(0.0),
@@ -111,6 +117,7 @@ void RveParameters::parse_parameters(dealii::ParameterHandler& prm, const std::s
   relaxation_criterion = prm.get("Relaxation criterion");
   relaxation_tolerance = prm.get_double("Relaxation tolerance");
   servo_tolerance = prm.get_double("Servo tolerance");
+  servo_scale = prm.get("Servo residual scale");
   gain_a = prm.get_double("Force gain");
   gain_m = prm.get_double("Moment gain");
   check_interval = prm.get_integer("Check interval");
@@ -147,6 +154,7 @@ RveSetup RveParameters::setup(const std::string& log_file) const
                  {"relax", relaxation_criterion},
                  {"relax_tol", number(relaxation_tolerance)},
                  {"servo_tol", number(servo_tolerance)},
+                 {"servo_scale", servo_scale},
                  {"check_every", std::to_string(check_interval)},
                  {"max_steps", std::to_string(step_budget)},
                  {"start", start},
@@ -180,6 +188,10 @@ void PathParameters::declare_parameters(dealii::ParameterHandler& prm)
                     "isotropic and biaxial: also hold sigma12 = 0 through F12 (and, in the "
                     "isotropic stage, sigma11 = sigma22 = -p through F11, F22), i.e. the stress "
                     "state of a macro element whose edges are free in shear.");
+  prm.declare_entry("Isotropic control", "mean stress", dealii::Patterns::Selection("mean stress|each component"),
+                    "isotropic stage without 'Free shear': 'mean stress' holds (sigma11 + sigma22)/2 = -p "
+                    "with F11 = F22; 'each component' holds sigma11 = sigma22 = -p through F11 and F22 "
+                    "with F12 = F21 = 0, as a periodic cell under stress control (benchmarks/frame_vs_periodic).");
   prm.declare_entry("Max stress iterations", "15", Integer(1),
                     "Secant iterations on F per stress-controlled load step.");
   prm.leave_subsection();
@@ -198,6 +210,7 @@ void PathParameters::parse_parameters(dealii::ParameterHandler& prm, const std::
   stress_tolerance = prm.get_double("Stress tolerance");
   max_stress_iterations = prm.get_integer("Max stress iterations");
   free_shear = prm.get_bool("Free shear");
+  isotropic_components = prm.get("Isotropic control") == "each component";
   prm.leave_subsection();
   if (type == "isotropic" && (pressure <= 0.0 || isotropic_steps == 0))
     throw std::runtime_error("subsection Path: Type = isotropic needs 'Pressure' > 0 and "

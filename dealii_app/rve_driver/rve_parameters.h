@@ -31,6 +31,7 @@ struct RveParameters
   double friction, kn, kt, time_step, damping_force, damping_moment;
   std::string rotation, start, relaxation_criterion;
   double relaxation_tolerance, servo_tolerance, gain_a, gain_m;
+  std::string servo_scale; ///< inertia (R14) | contact
   unsigned int check_interval, step_budget;
   std::string membrane; ///< yes | no: frame membrane of fix rve/servo
   double max_overlap;   ///< largest overlap / smaller radius
@@ -53,6 +54,7 @@ struct PathParameters
   std::string table_file;
   double stress_tolerance;
   bool free_shear;           ///< also hold sigma12 = 0 through F12 (as the macro biaxial test)
+  bool isotropic_components; ///< isotropic stage: sigma11 = sigma22 = -p through F11, F22 (F12 = 0)
   unsigned int max_stress_iterations;
 
   static void declare_parameters(dealii::ParameterHandler& prm);

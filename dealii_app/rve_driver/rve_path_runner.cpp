@@ -150,6 +150,16 @@ void RvePathRunner::run_isotropic_stage()
     }
     return;
   }
+  if (prm_.path.isotropic_components)
+  {
+    for (unsigned int k = 1; k <= prm_.path.isotropic_steps; ++k)
+    {
+      const double p = -prm_.path.pressure * k / prm_.path.isotropic_steps;
+      const unsigned int its = control_components(F_, {0, 3}, {p, p}, "sigma11, sigma22");
+      write_row(rve_.result(), its);
+    }
+    return;
+  }
   const unsigned int n = prm_.path.isotropic_steps;
   double lambda = F_[0];
   for (unsigned int k = 1; k <= n; ++k)

@@ -277,11 +277,14 @@ void FixRveServo::initial_integrate(int)
   double** x = atom->x;
   double** v = atom->v;
   double** omega = atom->omega;
+  const bool moving = move_done_ < move_steps_;
+  const bool affine = moving && affine_step_ != Mat2{0.0, 0.0, 0.0, 0.0};
+  if (affine)
+    add_affine_velocity();
   half_kick_inner(/*drift=*/true);
 
   // Frame: prescribed velocities; positions interpolated so that the end
   // of a move lands exactly on the target.
-  const bool moving = move_done_ < move_steps_;
   if (moving)
     ++move_done_;
   const double s = moving ? static_cast<double>(move_done_) / move_steps_ : 0.0;
@@ -320,6 +323,7 @@ void FixRveServo::post_force(int)
 
   for (std::size_t q = 0; q < frame_.particles.size(); ++q)
     frame_local_[q] = local_index(frame_.particles[q].tag);
+  remove_affine_velocity(); // the pair style has seen it; damping acts on the rest
   apply_membrane();
   for (std::size_t q = 0; q < frame_.particles.size(); ++q)
   {
@@ -342,6 +346,59 @@ void FixRveServo::post_force(int)
     else
       torque[i][2] -= beta_ * std::abs(torque[i][2]) * sign(omega[i][2]);
   }
+}
+
+// inner_start affine (physics.md §2.5 step 1, issue 14): while the frame
+// moves to a new F, each inner particle also moves with the affine velocity
+// field L (x - origin) of the frame's own motion: D = (F - F_before) F_before^-1
+// spread linearly over the move's n steps (affine_step_ = D/n),
+// and turns with its spin, as particles of a periodic cell follow the cell's
+// mean field. The velocity is in atom->v while the pair style runs, so the
+// tangential springs see the affine part of every relative motion; it is
+// taken out again in post_force, so that damping and the kinetic energy act
+// on the fluctuation only. Nothing is teleported.
+void FixRveServo::add_affine_velocity()
+{
+  double** x = atom->x;
+  double** v = atom->v;
+  double** omega = atom->omega;
+  const int* mask = atom->mask;
+  // The frame follows x(s) = (I + s D) x0 linearly in s = k/n (schedule_frame_move);
+  // L_k = (D/n) (I + (k/n) D)^-1 / dt moves a point of that path exactly onto it.
+  const Mat2 L = (1.0 / dtv_) *
+                 matmul(affine_step_, fe2dem::inverse(fe2dem::identity2() + move_done_ * affine_step_));
+  const double spin = 0.5 * (L[2] - L[1]);
+  affine_velocity_.assign(atom->nlocal, Vec2{0.0, 0.0});
+  for (int i = 0; i < atom->nlocal; ++i)
+  {
+    if (!(mask[i] & groupbit) || (mask[i] & frame_groupbit_))
+      continue;
+    const Vec2 va = fe2dem::apply(L, Vec2{x[i][0], x[i][1]} - frame_.origin);
+    affine_velocity_[i] = va;
+    v[i][0] += va[0];
+    v[i][1] += va[1];
+    if (!lock_rotation_)
+      omega[i][2] += spin;
+  }
+  affine_spin_ = lock_rotation_ ? 0.0 : spin;
+}
+
+void FixRveServo::remove_affine_velocity()
+{
+  if (affine_velocity_.empty())
+    return;
+  double** v = atom->v;
+  double** omega = atom->omega;
+  const int* mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; ++i)
+  {
+    if (!(mask[i] & groupbit) || (mask[i] & frame_groupbit_))
+      continue;
+    v[i][0] -= affine_velocity_[i][0];
+    v[i][1] -= affine_velocity_[i][1];
+    omega[i][2] -= affine_spin_;
+  }
+  affine_velocity_.clear();
 }
 
 void FixRveServo::final_integrate()

@@ -26,6 +26,10 @@
  *     check_every N            steps between convergence checks, default 50
  *     max_steps N              step budget of one solve, default 2000000
  *     start keep|reset         keep or reset frame fluctuations at a new F, default keep
+ *     inner_start keep|affine  at a new F the inner particles start where they are and
+ *                              follow the frame through contacts (keep, [LBS]), or move
+ *                              with the affine velocity field of F_old -> F while the
+ *                              frame moves (affine; tangential springs see it), default keep
  *     move_rate FRAC           largest frame move per step / R_min, default 1e-3
  *     on_failure error|flag    stop LIGGGHTS or only set the status, default error
  *     max_overlap FRAC         largest contact overlap / smaller radius, in the
@@ -143,6 +147,8 @@ public:
   const std::vector<fe2dem::Vec2>& fluctuations() const { return w_; }
   /// Current rotation of each frame particle, in frame order.
   const std::vector<double>& frame_rotations() const { return theta_frame_; }
+  /// Steps of the current frame move still to run (0: the frame is at rest).
+  int frame_move_steps_left() const { return move_steps_ - move_done_; }
   /// Steps between checks: C++ drivers run chunks of this length.
   int check_interval() const { return check_every_; }
   /// Step budget of one solve (keyword max_steps, fix_modify max_steps).
@@ -198,6 +204,9 @@ private:
   template <class Stream>
   void transfer_state(Stream& s);
   void half_kick_inner(bool drift);
+  /// inner_start affine: adds / removes the affine velocity of the inner particles.
+  void add_affine_velocity();
+  void remove_affine_velocity();
 
   // --- frame membrane (fix_rve_servo_membrane.cpp) --------------------------
   /// Segments between neighbouring frame particles, grouped by cell side.
@@ -252,6 +261,7 @@ private:
   int check_every_ = 50;
   long max_steps_ = 2000000;
   bool keep_fluctuations_ = true;
+  bool affine_inner_ = false; ///< inner_start affine
   double move_rate_ = 1e-3;
   bool error_on_failure_ = true;
   bool membrane_on_ = true;
@@ -283,6 +293,9 @@ private:
   std::vector<fe2dem::Vec2> move_start_, move_target_;
   std::vector<double> rot_start_, rot_target_;
   int move_steps_ = 0, move_done_ = 0;
+  fe2dem::Mat2 affine_step_{0, 0, 0, 0};    ///< L dt of inner_start affine during the current move
+  std::vector<fe2dem::Vec2> affine_velocity_; ///< per local index, added this step
+  double affine_spin_ = 0.0;
 
   // per-step records
   std::vector<int> frame_local_;          ///< local index of each frame particle

@@ -113,6 +113,7 @@ void FixRveServo::parse_arguments(int narg, char** arg)
                      max_steps_ = static_cast<long>(number(kw, v[0], 1.0, false));
                    }}},
     {"start", {1, [&](const char* kw, char** v) { keep_fluctuations_ = choice(kw, v[0], "keep", "reset"); }}},
+    {"inner_start", {1, [&](const char* kw, char** v) { affine_inner_ = !choice(kw, v[0], "keep", "affine"); }}},
     {"move_rate", {1, [&](const char* kw, char** v) { move_rate_ = number(kw, v[0], 0.0, true); }}},
     {"on_failure", {1, [&](const char* kw, char** v) { error_on_failure_ = choice(kw, v[0], "error", "flag"); }}},
     {"max_overlap", {1, [&](const char* kw, char** v) { max_overlap_ = number(kw, v[0], 0.0, true); }}},

@@ -52,6 +52,7 @@ void FixRveServo::transfer_state(Stream& s)
   s.io(rot_target_);
   s.io(move_steps_);
   s.io(move_done_);
+  s.io(affine_step_);
   // solve state and last results
   s.io(frame_force_);
   s.io(frame_moment_);

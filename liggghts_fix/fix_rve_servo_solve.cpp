@@ -17,6 +17,7 @@ using namespace fe2dem;
 
 void FixRveServo::begin_solve()
 {
+  const Mat2 F_before = F_;
   F_ = evaluate_deformation();
   membrane_stale_ = true; // its candidate search depends on F
   if (!keep_fluctuations_)
@@ -37,6 +38,12 @@ void FixRveServo::begin_solve()
   checks_since_contact_pass_ = 1 << 30; // first relaxed check of a solve: fresh contact pass
   solve_pending_ = false;
   schedule_frame_move();
+  // inner_start affine: the inner particles get the velocity field of the
+  // affine motion F_before -> F while the frame moves (see initial_integrate).
+  // (The time step may not be known yet: the first solve can begin before init().)
+  affine_step_ = Mat2{0.0, 0.0, 0.0, 0.0};
+  if (affine_inner_ && F_ != F_before)
+    affine_step_ = (1.0 / move_steps_) * matmul(F_ - F_before, fe2dem::inverse(F_before));
 }
 
 // Targets (R2, R3): x_q = F X_q + w_e for both members of pair e, corners
@@ -67,6 +74,7 @@ void FixRveServo::schedule_frame_move()
   }
   move_steps_ = std::max(1, static_cast<int>(std::ceil(largest / (move_rate_ * r_min_))));
   move_done_ = 0;
+  affine_step_ = Mat2{0.0, 0.0, 0.0, 0.0}; // servo moves are not affine (begin_solve sets it)
 }
 
 void FixRveServo::end_of_step()

@@ -1,7 +1,7 @@
 // Physics checks of fix rve/servo through real LIGGGHTS instances.
 // Usage: test_rve_servo CASE TEMPLATE PACKING_PREFIX
 //   CASE: servo | agreement | hill_mandel | objectivity | rotation | unbalanced | budget |
-//         frozen_inner | contact_count | lattice | servo_scale
+//         frozen_inner | contact_count | lattice | servo_scale | affine_start
 #include "check.h"
 #include "servo_rve.h"
 
@@ -390,6 +390,49 @@ void check_lattice(Checker& check)
   }
 }
 
+/// inner_start affine on the lattice, whose equilibrium under any F is the
+/// affine one: the inner particles ride the affine velocity field while the
+/// frame moves and arrive where F puts them, so the solve needs few steps;
+/// the stresses are those of keep (same closed-form state).
+void check_affine_start(Checker& check)
+{
+  const Mat2 F{1.001, 0.0005, 0.0005, 0.9995};
+  std::map<std::string, Result> results;
+  for (const char* mode : {"affine", "keep"})
+  {
+    ServoRve rve(setup("free", {{"inner_start", mode}, {"servo_tol", "1e-9"}, {"relax_tol", "1e-12"},
+                                {"check_every", "20"}}));
+    auto* atom = rve.instance().lammps()->atom;
+    const Vec2 origin = rve.fix().frame().origin;
+    std::map<int, Vec2> X;
+    for (int i = 0; i < atom->nlocal; ++i)
+      if (atom->type[i] == 1)
+        X[atom->tag[i]] = Vec2{atom->x[i][0], atom->x[i][1]} - origin;
+    rve.fix().set_deformation(F);
+    bool first = true;
+    while (rve.fix().frame_move_steps_left() > 0) // exactly the frame move
+    {
+      rve.instance().command(first ? "run 1 post no" : "run 1 pre no post no");
+      first = false;
+    }
+    double worst = 0.0;
+    for (int i = 0; i < atom->nlocal; ++i)
+      if (atom->type[i] == 1)
+        worst = std::max(worst, norm(Vec2{atom->x[i][0], atom->x[i][1]} - origin - fe2dem::apply(F, X[atom->tag[i]])));
+    worst /= atom->radius[0];
+    std::cout << "  " << mode << ": max |x - F X| / R of inner particles after the frame move: " << worst << std::endl;
+    if (std::string(mode) == "affine")
+      check.less("affine: inner particles at F X when the frame arrives (max distance / R)", worst, 1e-8);
+    else
+      check.truth("keep: inner particles lag behind the frame", worst > 1e-4, std::to_string(worst));
+    results[mode] = rve.solve(F);
+    std::cout << "  " << mode << ": DEM steps of the solve " << results[mode].dem_steps << std::endl;
+  }
+  // Tangential springs integrate along different paths: equal to second order.
+  check.less("same stress (relative)", rel(results["affine"].sigma, results["keep"].sigma), 1e-5);
+  check.less("affine needs fewer DEM steps", results["affine"].dem_steps, results["keep"].dem_steps);
+}
+
 /// Root mean square of the pair imbalances |a+ + a-| over the rms contact force
 /// (mean over the pairs and the corner group, as servo_scale contact).
 double relative_imbalance(LAMMPS_NS::FixRveServo& fix)
@@ -457,6 +500,7 @@ int main(int argc, char** argv)
     else if (c == "contact_count") check_contact_count(check);
     else if (c == "lattice") check_lattice(check);
     else if (c == "servo_scale") check_servo_scale(check);
+    else if (c == "affine_start") check_affine_start(check);
     else check.truth("known case", false, c);
   }
   catch (const std::exception& e)

@@ -71,6 +71,11 @@ void RveParameters::declare_parameters(dealii::ParameterHandler& prm)
   prm.declare_entry("Start", "keep", Selection("keep|reset"),
                     "At a new F, keep the frame fluctuations of the previous solve or reset "
                     "them to zero.");
+  prm.declare_entry("Inner start", "keep", Selection("keep|affine"),
+                    "At a new F: keep = inner particles start where they are and follow the "
+                    "frame through contacts ([LBS]); affine = they also move with the affine "
+                    "velocity field of the old to the new F while the frame moves (contact "
+                    "springs see it).");
   prm.declare_entry("Relaxation criterion", "ekin_epot", Selection("ekin_epot|unbalanced"),
                     "E_kin/E_pot (R12) or the unbalanced-force index (R13).");
   prm.declare_entry("Relaxation tolerance", "1e-3", Double(0.0),
@@ -118,6 +123,7 @@ void RveParameters::parse_parameters(dealii::ParameterHandler& prm, const std::s
   relaxation_tolerance = prm.get_double("Relaxation tolerance");
   servo_tolerance = prm.get_double("Servo tolerance");
   servo_scale = prm.get("Servo residual scale");
+  inner_start = prm.get("Inner start");
   gain_a = prm.get_double("Force gain");
   gain_m = prm.get_double("Moment gain");
   check_interval = prm.get_integer("Check interval");
@@ -158,6 +164,7 @@ RveSetup RveParameters::setup(const std::string& log_file) const
                  {"check_every", std::to_string(check_interval)},
                  {"max_steps", std::to_string(step_budget)},
                  {"start", start},
+                 {"inner_start", inner_start},
                  {"membrane", membrane},
                  {"max_overlap", number(max_overlap)}});
   return s;

@@ -32,6 +32,7 @@ struct RveParameters
   std::string rotation, start, relaxation_criterion;
   double relaxation_tolerance, servo_tolerance, gain_a, gain_m;
   std::string servo_scale; ///< inertia (R14) | contact
+  std::string inner_start; ///< keep | affine
   unsigned int check_interval, step_budget;
   std::string membrane; ///< yes | no: frame membrane of fix rve/servo
   double max_overlap;   ///< largest overlap / smaller radius

@@ -252,10 +252,9 @@ void FixRveServo::half_kick_inner(bool drift)
   double** f = atom->f;
   double** omega = atom->omega;
   double** torque = atom->torque;
-  const int* mask = atom->mask;
   for (int i = 0; i < atom->nlocal; ++i)
   {
-    if (!(mask[i] & groupbit) || (mask[i] & frame_groupbit_))
+    if (!is_inner(i))
       continue;
     const double dtfm = dtf_ / atom->rmass[i];
     v[i][0] += dtfm * f[i][0];
@@ -319,7 +318,6 @@ void FixRveServo::post_force(int)
   double** v = atom->v;
   double** omega = atom->omega;
   double** torque = atom->torque;
-  const int* mask = atom->mask;
 
   for (std::size_t q = 0; q < frame_.particles.size(); ++q)
     frame_local_[q] = local_index(frame_.particles[q].tag);
@@ -336,7 +334,7 @@ void FixRveServo::post_force(int)
   unbalanced_sq_sum_ = 0.0;
   for (int i = 0; i < atom->nlocal; ++i)
   {
-    if (!(mask[i] & groupbit) || (mask[i] & frame_groupbit_))
+    if (!is_inner(i))
       continue;
     unbalanced_sq_sum_ += f[i][0] * f[i][0] + f[i][1] * f[i][1];
     f[i][0] -= alpha_ * std::abs(f[i][0]) * sign(v[i][0]);
@@ -362,7 +360,6 @@ void FixRveServo::add_affine_velocity()
   double** x = atom->x;
   double** v = atom->v;
   double** omega = atom->omega;
-  const int* mask = atom->mask;
   // The frame follows x(s) = (I + s D) x0 linearly in s = k/n (schedule_frame_move);
   // L_k = (D/n) (I + (k/n) D)^-1 / dt moves a point of that path exactly onto it.
   const Mat2 L = (1.0 / dtv_) *
@@ -371,7 +368,7 @@ void FixRveServo::add_affine_velocity()
   affine_velocity_.assign(atom->nlocal, Vec2{0.0, 0.0});
   for (int i = 0; i < atom->nlocal; ++i)
   {
-    if (!(mask[i] & groupbit) || (mask[i] & frame_groupbit_))
+    if (!is_inner(i))
       continue;
     const Vec2 va = fe2dem::apply(L, Vec2{x[i][0], x[i][1]} - frame_.origin);
     affine_velocity_[i] = va;
@@ -389,10 +386,9 @@ void FixRveServo::remove_affine_velocity()
     return;
   double** v = atom->v;
   double** omega = atom->omega;
-  const int* mask = atom->mask;
   for (int i = 0; i < atom->nlocal; ++i)
   {
-    if (!(mask[i] & groupbit) || (mask[i] & frame_groupbit_))
+    if (!is_inner(i))
       continue;
     v[i][0] -= affine_velocity_[i][0];
     v[i][1] -= affine_velocity_[i][1];

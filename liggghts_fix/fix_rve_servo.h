@@ -239,6 +239,11 @@ private:
   /// Refreshes membrane_lines_[side][k] from the current frame positions.
   void update_membrane_line(int side, int k);
   void collect_membrane_candidates();
+  /// Particle i is an inner particle the fix integrates (in its group, not in the frame).
+  bool is_inner(int i) const
+  {
+    return (atom->mask[i] & groupbit) && !(atom->mask[i] & frame_groupbit_);
+  }
   /// Moment of inertia of particle i (disc or sphere factor).
   double inertia_of(int i) const
   {

@@ -230,17 +230,23 @@ void check_unbalanced(Checker& check)
   check.less("|sigma - sigma_LW| / |sigma_LW| < 1 %", rel(r.sigma, r.sigma_lw), 0.01);
 }
 
-/// `key value` lines of the PREFIX.stats.txt written by build_frame.py.
-std::map<std::string, std::string> packing_stats()
+/// `key value` lines of a file (build_frame.py statistics, make_lattice.py parameters).
+std::map<std::string, double> numbers_of(const std::string& path)
 {
-  std::ifstream in(packing + ".stats.txt");
-  std::map<std::string, std::string> stats;
+  std::ifstream in(path);
+  std::map<std::string, double> out;
   std::string key, value;
   while (in >> key >> value)
-    stats[key] = value;
-  if (stats.empty())
-    throw std::runtime_error("cannot read " + packing + ".stats.txt");
-  return stats;
+    try
+    {
+      out[key] = std::stod(value);
+    }
+    catch (const std::exception&)
+    {
+    } // text values (file names) are not needed here
+  if (out.empty())
+    throw std::runtime_error("cannot read " + path);
+  return out;
 }
 
 /// One physical contact, one count: the RVE as built holds exactly the
@@ -250,9 +256,9 @@ std::map<std::string, std::string> packing_stats()
 /// mechanical coordination, fabric.
 void check_contact_count(Checker& check)
 {
-  const auto stats = packing_stats();
-  const int periodic_contacts = std::stoi(stats.at("n_contacts"));
-  const auto stat = [&](const char* key) { return std::stod(stats.at(key)); };
+  const auto stats = numbers_of(packing + ".stats.txt");
+  const int periodic_contacts = static_cast<int>(stats.at("n_contacts"));
+  const auto stat = [&](const char* key) { return stats.at(key); };
   // The fix's statistics of the packing as built: inner particles frozen, the
   // frame at rest under F = I, and the first check (one step) accepted.
   RveSetup s = setup("free", {{"check_every", "1"}, {"relax_tol", "1e30"}, {"servo_tol", "1e30"}});
@@ -294,25 +300,6 @@ void check_contact_count(Checker& check)
             << stats.at("coordination") << ", mechanical " << stats.at("coordination_mechanical")
             << "; fix: " << c.n_contacts << ", " << c.coordination << ", " << c.mechanical_coordination
             << std::endl;
-}
-
-/// `key value` lines of a file (build_frame.py statistics, make_lattice.py parameters).
-std::map<std::string, double> numbers_of(const std::string& path)
-{
-  std::ifstream in(path);
-  std::map<std::string, double> out;
-  std::string key, value;
-  while (in >> key >> value)
-    try
-    {
-      out[key] = std::stod(value);
-    }
-    catch (const std::exception&)
-    {
-    } // text values (file names) are not needed here
-  if (out.empty())
-    throw std::runtime_error("cannot read " + path);
-  return out;
 }
 
 /**

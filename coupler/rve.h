@@ -1,7 +1,12 @@
 /**
  * @file rve.h
- * The RVE as a macro code sees it: solve under a deformation gradient,
- * commit, roll back, serialise. ServoRve is the LIGGGHTS implementation.
+ * The RVE as a macro code sees it (preCICE Micro Manager style): solve
+ * under a deformation gradient, commit, roll back, get the state as bytes
+ * and make an RVE from them again. No LIGGGHTS types: ServoRve
+ * (servo_rve.h) is the LIGGGHTS implementation, made by the factory of
+ * servo_rve_factory.h; RvePool holds RVEs only through this interface.
+ *
+ * @tparam dim 2 (3 once fix rve/servo has a 3D frame).
  */
 #pragma once
 
@@ -9,29 +14,77 @@
 
 #include <Eigen/Dense>
 
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace fe2dem
 {
+template <int dim>
 class Rve
 {
 public:
+  using Tensor = Eigen::Matrix<double, dim, dim>;
   virtual ~Rve() = default;
-  /// Relaxes the RVE under macro deformation @p F (det F > 0); tension positive.
-  virtual RveResponse solve(const Eigen::Matrix2d& F) = 0;
+
   /**
-   * Drives the RVE by a strain increment given in its (corotational)
-   * frame, physics.md §1.4: F_next = (I + @p d_eps) F_current, where
-   * F_current is the F of the last solve (or the committed one in committed
-   * history mode). Returns the response; its sigma is the corotational
-   * Cauchy stress sigma^R.
+   * Relaxes the RVE under macro deformation @p F (det F > 0). In committed
+   * history mode the solve starts from the last committed state.
+   * @throws std::runtime_error if the solve fails (no convergence within
+   *         its budget, an escaped particle, a blow-up, an overlap).
    */
-  virtual RveResponse solve_increment(const Eigen::Matrix2d& d_eps) = 0;
+  virtual const RveResponse<dim>& solve(const Tensor& F) = 0;
+  /**
+   * Drives the RVE by a strain increment in its (corotational) frame,
+   * physics.md §1.4: F_next = (I + @p d_eps) F_current, F_current being
+   * the F of the last solve (the committed one in committed history mode).
+   */
+  virtual const RveResponse<dim>& solve_increment(const Tensor& d_eps) = 0;
+  /// The response of the current state (last solve, or as built / restored).
+  virtual const RveResponse<dim>& response() const = 0;
+  /**
+   * Multiple time stepping ([LSYF] Eq. 66): later solves run at most
+   * @p steps DEM steps and return the state they stopped in
+   * (RveResponse::converged false) instead of failing. 0: to convergence.
+   */
+  virtual void set_step_limit(long steps) = 0;
+  /**
+   * Overrides the step budget after which a solve fails, until the next
+   * rollback or restore (which bring the template's budget back). Tests
+   * use it to inject a fault.
+   */
+  virtual void set_step_budget(long steps) = 0;
+
   /// Accepts the current state as the converged load step.
   virtual void commit() = 0;
   /// Returns exactly to the last committed state.
   virtual void rollback() = 0;
-  /// The full current state as bytes, for checkpoints and migration.
+  /// The full current state as bytes (get_state), for migration.
   virtual std::vector<char> serialise() = 0;
+  /// The last committed state as bytes, for checkpoints.
+  virtual std::vector<char> committed_state() const = 0;
+
+  /// Wall seconds of the last solve (the cost RvePool balances).
+  virtual double last_solve_seconds() const = 0;
+  /// Writes particle pictures of the current state (see particle_dump.h).
+  virtual void write_particles(const std::string& prefix, long timestep) const = 0;
+};
+
+/// Makes the RVEs of a pool: all alike, fresh or from saved states.
+template <int dim>
+class RveFactory
+{
+public:
+  virtual ~RveFactory() = default;
+  /**
+   * Checks, before any RVE exists, what create() will need (e.g. the
+   * LIGGGHTS template, in a child process).
+   * @throws std::runtime_error with a message for the user.
+   */
+  virtual void check() const = 0;
+  /// A new RVE, relaxed at F = I and committed there.
+  virtual std::unique_ptr<Rve<dim>> create() const = 0;
+  /// An RVE from serialise() / committed_state() bytes, committed there.
+  virtual std::unique_ptr<Rve<dim>> restore(const std::vector<char>& state) const = 0;
 };
 } // namespace fe2dem

@@ -1,8 +1,5 @@
 #include "rve_pool.h"
 
-#include "particle_dump.h"
-#include "template_check.h"
-
 #include <algorithm>
 #include <climits>
 #include <numeric>
@@ -13,62 +10,65 @@ namespace fe2dem
 {
 namespace
 {
-/// One IP's result as it travels between ranks.
-struct Record
+/// Doubles of one IP's result as it travels between ranks: index, wall
+/// seconds of the solve (the cost used for placement), the response.
+template <int dim>
+constexpr std::size_t record_size()
 {
-  int index;
-  int skipped;    ///< 1: F within the skip tolerance of the last solve, result reused
-  int converged;  ///< 0: a bounded solve stopped at the step limit
-  double seconds; ///< wall time of the solve: the cost used for placement
-  LAMMPS_NS::FixRveServo::Result result;
-};
+  return 2 + RveResponse<dim>::packed_size();
+}
 
-double distance(const Eigen::Matrix2d& F, const Mat2& G)
+template <int dim>
+double distance(const Eigen::Matrix<double, dim, dim>& F, const std::array<double, dim * dim>& G)
 {
-  return (F - to_eigen(G)).norm();
+  return (F - rve_to_macro<dim>(G)).norm();
 }
 } // namespace
 
-RvePool::RvePool(MPI_Comm comm, const RveSetup& setup, HistoryMode mode,
-                 const std::vector<QuadraturePoint>& points)
-  : RvePool(comm, setup, mode, points, 0,
-            [&](std::size_t) { return std::make_unique<ServoRve>(setup, mode); })
+template <int dim>
+RvePool<dim>::RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
+                      const std::vector<QuadraturePoint>& points)
+  : RvePool(comm, factory, points, 0, [this](std::size_t) { return factory_->create(); })
 {
 }
 
-RvePool::RvePool(MPI_Comm comm, const RveSetup& setup, HistoryMode mode,
-                 const std::vector<QuadraturePoint>& points, const StateSource& state_of,
-                 int load_step)
-  : RvePool(comm, setup, mode, points, load_step,
-            [&](std::size_t k) { return ServoRve::restore(setup, state_of(k), mode); })
+template <int dim>
+RvePool<dim>::RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
+                      const std::vector<QuadraturePoint>& points, const StateSource& state_of,
+                      int load_step)
+  : RvePool(comm, factory, points, load_step,
+            [&](std::size_t k) { return factory_->restore(state_of(k)); })
 {
 }
 
-RvePool::RvePool(MPI_Comm comm, const RveSetup& setup, HistoryMode mode,
-                 const std::vector<QuadraturePoint>& points, int load_step, const Factory& make)
-  : comm_(comm), setup_(setup), mode_(mode), points_(points), owner_(points.size()),
+template <int dim>
+RvePool<dim>::RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
+                      const std::vector<QuadraturePoint>& points, int load_step, const Make& make)
+  : comm_(comm), factory_(std::move(factory)), points_(points), owner_(points.size()),
     cost_(points.size(), 0.0), load_step_(load_step)
 {
   MPI_Comm_rank(comm_, &rank_);
   MPI_Comm_size(comm_, &n_ranks_);
-  check_template(); // before any instance exists
+  check_factory(); // before any instance exists
   place_in_blocks();
   for (std::size_t k = 0; k < points_.size(); ++k)
     if (owner_[k] == rank_)
       local_[k] = make(k);
 }
 
-// The template is checked once, in a child process, before any instance
-// exists: a LIGGGHTS error there would exit(1) this whole MPI job.
-void RvePool::check_template() const
+// The factory's input (e.g. the LIGGGHTS template) is checked once, in a
+// child process, before any instance exists: a LIGGGHTS error there would
+// exit(1) this whole MPI job.
+template <int dim>
+void RvePool<dim>::check_factory() const
 {
   std::string problem;
   if (rank_ == 0)
     try
     {
-      check_rve_template(setup_);
+      factory_->check();
     }
-    catch (const TemplateError& e)
+    catch (const std::runtime_error& e)
     {
       problem = e.what();
     }
@@ -78,18 +78,20 @@ void RvePool::check_template() const
   {
     problem.resize(length);
     MPI_Bcast(&problem[0], length, MPI_CHAR, 0, comm_);
-    throw TemplateError(problem);
+    throw std::runtime_error(problem);
   }
 }
 
-void RvePool::place_in_blocks()
+template <int dim>
+void RvePool<dim>::place_in_blocks()
 {
   const std::size_t n = points_.size();
   for (std::size_t k = 0; k < n; ++k)
     owner_[k] = static_cast<int>(k * n_ranks_ / std::max<std::size_t>(n, 1));
 }
 
-std::vector<char> RvePool::send_bytes(int from, int to, std::vector<char> bytes) const
+template <int dim>
+std::vector<char> RvePool<dim>::send_bytes(int from, int to, std::vector<char> bytes) const
 {
   if (from == to)
     return bytes;
@@ -110,7 +112,8 @@ std::vector<char> RvePool::send_bytes(int from, int to, std::vector<char> bytes)
   return bytes;
 }
 
-std::vector<std::vector<char>> RvePool::gather_committed_states(int root) const
+template <int dim>
+std::vector<std::vector<char>> RvePool<dim>::gather_committed_states(int root) const
 {
   std::vector<std::vector<char>> states(rank_ == root ? points_.size() : 0);
   for (std::size_t k = 0; k < points_.size(); ++k)
@@ -126,7 +129,8 @@ std::vector<std::vector<char>> RvePool::gather_committed_states(int root) const
   return states;
 }
 
-std::vector<RveResponse> RvePool::solve(const std::vector<Eigen::Matrix2d>& F)
+template <int dim>
+std::vector<RveResponse<dim>> RvePool<dim>::solve(const std::vector<Tensor>& F)
 {
   if (F.size() != points_.size())
     throw std::invalid_argument("RvePool::solve: " + std::to_string(F.size()) +
@@ -134,35 +138,43 @@ std::vector<RveResponse> RvePool::solve(const std::vector<Eigen::Matrix2d>& F)
                                 " quadrature points");
   committed_ = false;
   const double t0 = MPI_Wtime();
-  std::vector<Record> mine;
+  constexpr std::size_t width = record_size<dim>();
+  std::vector<double> mine;
+  mine.reserve(local_.size() * width);
   int failed = INT_MAX;
   std::string reason;
   for (auto& [k, rve] : local_)
   {
-    Record r{static_cast<int>(k), 0, 1, 0.0, {}};
-    if (skip_tolerance_ > 0.0 && distance(F[k], rve->result().F) < skip_tolerance_)
+    RveResponse<dim> r;
+    double seconds = 0.0;
+    if (skip_tolerance_ > 0.0 && distance<dim>(F[k], rve->response().F) < skip_tolerance_)
     {
-      r.skipped = 1;
-      r.result = rve->result();
-      mine.push_back(r);
-      continue;
+      r = rve->response();
+      r.solved = false;
+      r.converged = true;
+      r.statistics.dem_steps = 0;
     }
-    try
+    else
     {
-      r.result = rve->solve(macro_to_rve(F[k]), step_limit_);
-      r.converged = rve->last_solve_converged();
-    }
-    catch (const std::exception& e)
-    {
-      if (static_cast<int>(k) < failed)
+      try
       {
-        failed = static_cast<int>(k);
-        reason = e.what();
+        r = rve->solve(F[k]);
       }
-      r.result = rve->result();
+      catch (const std::exception& e)
+      {
+        if (static_cast<int>(k) < failed)
+        {
+          failed = static_cast<int>(k);
+          reason = e.what();
+        }
+        r = rve->response();
+      }
+      seconds = rve->last_solve_seconds();
     }
-    r.seconds = rve->last_solve_seconds();
-    mine.push_back(r);
+    mine.push_back(static_cast<double>(k));
+    mine.push_back(seconds);
+    mine.resize(mine.size() + RveResponse<dim>::packed_size());
+    r.pack(&*(mine.end() - RveResponse<dim>::packed_size()));
   }
   local_seconds_ = MPI_Wtime() - t0;
 
@@ -177,35 +189,42 @@ std::vector<RveResponse> RvePool::solve(const std::vector<Eigen::Matrix2d>& F)
     MPI_Bcast(&reason[0], length, MPI_CHAR, owner_[first_failed], comm_);
     const QuadraturePoint& p = points_[first_failed];
     std::ostringstream msg;
-    msg << "RVE of IP " << p.id << " at (" << p.x << ", " << p.y << "), load step "
-        << load_step_ + 1 << ": " << reason;
+    msg << "RVE of IP " << p.id << " at (" << p.position[0];
+    for (int d = 1; d < dim; ++d)
+      msg << ", " << p.position[d];
+    msg << "), load step " << load_step_ + 1 << ": " << reason;
     throw CouplerError(p.id, msg.str());
   }
 
   // rve_to_macro: every rank gets every IP's result.
-  const int my_bytes = static_cast<int>(mine.size() * sizeof(Record));
+  const int my_count = static_cast<int>(mine.size());
   std::vector<int> counts(n_ranks_), displs(n_ranks_);
-  MPI_Allgather(&my_bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_);
+  MPI_Allgather(&my_count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_);
   std::exclusive_scan(counts.begin(), counts.end(), displs.begin(), 0);
-  std::vector<Record> all(points_.size());
-  MPI_Allgatherv(mine.data(), my_bytes, MPI_BYTE, all.data(), counts.data(), displs.data(),
-                 MPI_BYTE, comm_);
-  std::vector<RveResponse> out(points_.size());
-  for (const Record& r : all)
+  std::vector<double> all(points_.size() * width);
+  MPI_Allgatherv(mine.data(), my_count, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
+                 MPI_DOUBLE, comm_);
+  std::vector<RveResponse<dim>> out(points_.size());
+  for (std::size_t n = 0; n < points_.size(); ++n)
   {
-    out[r.index] = rve_to_macro(r.result);
-    out[r.index].converged = r.converged != 0;
-    if (r.skipped)
-    {
-      out[r.index].solved = false;
-      out[r.index].dem_steps = 0;
-    }
-    cost_[r.index] += r.seconds;
+    const double* record = &all[n * width];
+    const auto k = static_cast<std::size_t>(record[0]);
+    out[k].unpack(record + 2);
+    cost_[k] += record[1];
   }
   return out;
 }
 
-void RvePool::commit()
+template <int dim>
+void RvePool<dim>::set_step_limit(long steps)
+{
+  for (auto& [k, rve] : local_)
+    rve->set_step_limit(steps);
+  step_limit_ = steps;
+}
+
+template <int dim>
+void RvePool<dim>::commit()
 {
   for (auto& [k, rve] : local_)
     rve->commit();
@@ -213,33 +232,38 @@ void RvePool::commit()
   committed_ = true;
 }
 
-void RvePool::rollback()
+template <int dim>
+void RvePool<dim>::rollback()
 {
   for (auto& [k, rve] : local_)
     rve->rollback();
   committed_ = true;
 }
 
-void RvePool::write_particles(std::size_t k, const std::string& prefix, long timestep) const
+template <int dim>
+void RvePool<dim>::write_particles(std::size_t k, const std::string& prefix, long timestep) const
 {
   if (owner_.at(k) == rank_)
-    write_particle_dump(local_.at(k)->fix(), prefix, timestep);
+    local_.at(k)->write_particles(prefix, timestep);
 }
 
-void RvePool::command(std::size_t k, const std::string& liggghts_command)
+template <int dim>
+void RvePool<dim>::set_step_budget(std::size_t k, long steps)
 {
   if (owner_.at(k) == rank_)
-    local_.at(k)->instance().command(liggghts_command);
+    local_.at(k)->set_step_budget(steps);
 }
 
-void RvePool::require_committed(const char* what) const
+template <int dim>
+void RvePool<dim>::require_committed(const char* what) const
 {
   if (!committed_)
     throw std::logic_error(std::string("RvePool::") + what +
                            " needs the committed state: call it right after commit()");
 }
 
-void RvePool::move(std::size_t k, int to)
+template <int dim>
+void RvePool<dim>::move(std::size_t k, int to)
 {
   require_committed("move");
   const int from = owner_[k];
@@ -252,12 +276,16 @@ void RvePool::move(std::size_t k, int to)
     if (rank_ == from)
       local_.erase(k);
     else
-      local_[k] = ServoRve::restore(setup_, state, mode_);
+    {
+      local_[k] = factory_->restore(state);
+      local_[k]->set_step_limit(step_limit_);
+    }
   }
   owner_[k] = to;
 }
 
-int RvePool::rebalance()
+template <int dim>
+int RvePool<dim>::rebalance()
 {
   require_committed("rebalance");
   // Longest processing time first on identical (gathered) costs: the same
@@ -295,4 +323,5 @@ int RvePool::rebalance()
     }
   return moved;
 }
+template class RvePool<2>;
 } // namespace fe2dem

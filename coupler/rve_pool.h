@@ -12,12 +12,12 @@
  */
 #pragma once
 
-#include "rve_response.h"
-#include "servo_rve.h"
+#include "rve.h"
 
 #include <Eigen/Dense>
 #include <mpi.h>
 
+#include <array>
 #include <functional>
 #include <map>
 #include <memory>
@@ -28,9 +28,8 @@ namespace fe2dem
 {
 struct QuadraturePoint
 {
-  long id = 0;          ///< global IP id (used in messages)
-  double x = 0, y = 0;  ///< position in the macro domain
-  double weight = 1.0;  ///< optional a-priori cost weight (unused once costs are measured)
+  long id = 0;                       ///< global IP id (used in messages)
+  std::array<double, 3> position{};  ///< in the macro domain (messages); unused components 0
 };
 
 /// An RVE of the pool failed; raised on every rank with the same message.
@@ -41,15 +40,18 @@ public:
   long ip_id;
 };
 
+template <int dim>
 class RvePool
 {
 public:
+  using Tensor = typename Rve<dim>::Tensor;
   /**
-   * Creates and relaxes the RVEs of this rank's share of @p points (block
-   * placement in list order) and commits their initial state.
-   * @pre every rank passes the same @p points and @p setup.
+   * Checks the factory's input once (factory->check() on rank 0, before any
+   * RVE exists), then creates and relaxes the RVEs of this rank's share of
+   * @p points (block placement in list order) and commits their initial state.
+   * @pre every rank passes the same @p points and an equivalent @p factory.
    */
-  RvePool(MPI_Comm comm, const RveSetup& setup, HistoryMode mode,
+  RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
           const std::vector<QuadraturePoint>& points);
 
   /// Where the RVEs of a resumed run come from: the committed state of RVE k.
@@ -60,7 +62,7 @@ public:
    * they were saved; @p load_step is the number of committed load steps.
    * Each rank asks @p state_of only for its own RVEs.
    */
-  RvePool(MPI_Comm comm, const RveSetup& setup, HistoryMode mode,
+  RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
           const std::vector<QuadraturePoint>& points, const StateSource& state_of, int load_step);
 
   /**
@@ -76,7 +78,7 @@ public:
    * @throws CouplerError naming IP id, position, load step and reason if
    *         any RVE fails (on all ranks).
    */
-  std::vector<RveResponse> solve(const std::vector<Eigen::Matrix2d>& F);
+  std::vector<RveResponse<dim>> solve(const std::vector<Tensor>& F);
   /**
    * Skip tolerance: an RVE whose F differs from the F of its last solve by
    * less than @p tolerance (Frobenius norm) is not solved again; its last
@@ -86,9 +88,9 @@ public:
   /**
    * Multiple time stepping: every solve() runs at most @p steps DEM steps per
    * RVE and returns unconverged states as they are (RveResponse::converged =
-   * false; see ServoRve::solve). 0 (default): every solve runs to convergence.
+   * false; see Rve::set_step_limit). 0 (default): every solve runs to convergence.
    */
-  void set_step_limit(long steps) { step_limit_ = steps; }
+  void set_step_limit(long steps);
 
   /// Accepts the last solves as the converged load step.
   void commit();
@@ -112,11 +114,11 @@ public:
   void write_particles(std::size_t k, const std::string& prefix, long timestep) const;
 
   /**
-   * Runs one LIGGGHTS command in RVE @p k's instance (on its owner; no
-   * communication), e.g. `fix_modify rve max_steps 1` to inject a fault in
-   * tests. Not part of the saved state: a rollback or restore drops it.
+   * Sets the step budget of RVE @p k (on its owner; no communication),
+   * e.g. 1 to inject a fault in tests (Rve::set_step_budget). Not part of
+   * the saved state: a rollback or restore drops it.
    */
-  void command(std::size_t k, const std::string& liggghts_command);
+  void set_step_budget(std::size_t k, long steps);
 
   int owner(std::size_t k) const { return owner_[k]; }
   std::size_t size() const { return points_.size(); }
@@ -128,22 +130,22 @@ public:
   double last_local_seconds() const { return local_seconds_; }
 
 private:
-  using Factory = std::function<std::unique_ptr<ServoRve>(std::size_t k)>;
+  using Make = std::function<std::unique_ptr<Rve<dim>>(std::size_t k)>;
   /// Shared by the public constructors: @p make builds this rank's RVE k.
-  RvePool(MPI_Comm comm, const RveSetup& setup, HistoryMode mode,
-          const std::vector<QuadraturePoint>& points, int load_step, const Factory& make);
+  RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
+          const std::vector<QuadraturePoint>& points, int load_step, const Make& make);
   void require_committed(const char* what) const;
-  void check_template() const;
+  /// factory_->check() on rank 0; its message raised on every rank.
+  void check_factory() const;
   /// Point-to-point: @p bytes (given on rank @p from) arrive on rank @p to; empty elsewhere.
   std::vector<char> send_bytes(int from, int to, std::vector<char> bytes) const;
   void place_in_blocks();
   MPI_Comm comm_;
   int rank_ = 0, n_ranks_ = 1;
-  RveSetup setup_;
-  HistoryMode mode_;
+  std::shared_ptr<const RveFactory<dim>> factory_;
   std::vector<QuadraturePoint> points_;
   std::vector<int> owner_;
-  std::map<std::size_t, std::unique_ptr<ServoRve>> local_;
+  std::map<std::size_t, std::unique_ptr<Rve<dim>>> local_;
   std::vector<double> cost_;
   int load_step_ = 0;
   bool committed_ = true;

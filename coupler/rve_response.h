@@ -1,59 +1,80 @@
 /**
  * @file rve_response.h
- * What an RVE returns to the macro scale, in Eigen types, and the two
- * conversions at the coupler's edge: macro_to_rve (F into the fix's
- * row-major layout) and rve_to_macro (the fix's results into Eigen).
+ * What an RVE returns to the macro scale: the deformation gradient it was
+ * solved under, the first Piola-Kirchhoff and Cauchy stresses, and the
+ * statistics of rve_statistics.h. No LIGGGHTS types: this is what crosses
+ * the coupler's edge (RvePool, fe2dem).
  *
- * Conventions: tension positive; 2D stress is force per length; F = dx/dX.
+ * Conventions: F = dx/dX; tension positive; 2D stress is force per length;
+ * tensors row-major {11, 12, 21, 22} (dim x dim in general).
  */
 #pragma once
 
-#include "fix_rve_servo.h"
+#include "rve_statistics.h"
 
 #include <Eigen/Dense>
 
+#include <array>
+#include <vector>
+
 namespace fe2dem
 {
+template <int dim>
 struct RveResponse
 {
-  Eigen::Matrix2d P = Eigen::Matrix2d::Zero();        ///< first Piola-Kirchhoff (R6)
-  Eigen::Matrix2d sigma = Eigen::Matrix2d::Zero();    ///< Cauchy (R7)
-  Eigen::Matrix2d sigma_lw = Eigen::Matrix2d::Zero(); ///< Love-Weber (R8)
-  Eigen::Matrix2d fabric = Eigen::Matrix2d::Zero();   ///< Pi of §2.6
-  double coordination = 0.0, mechanical_coordination = 0.0, anisotropy = 0.0;
-  double packing_fraction = 0.0, residual = 0.0, ekin_epot = 0.0;
-  int servo_iterations = 0;
-  long dem_steps = 0;
-  bool solved = true; ///< false: reused from the RVE's last solve (RvePool skip tolerance)
-  bool converged = true; ///< false: a bounded solve stopped at its step limit (RvePool::set_step_limit)
+  using Tensor = std::array<double, dim * dim>; ///< row-major
+  Tensor F{}, P{}, sigma{};                     ///< F of the solve, P (R6), Cauchy (R7)
+  RveStatistics<dim> statistics;
+  bool solved = true;    ///< false: reused from the RVE's last solve (skip tolerance)
+  bool converged = true; ///< false: a bounded solve stopped at its step limit
+
+  /// Doubles of pack(): the three tensors, the statistics, the two flags.
+  static constexpr std::size_t packed_size()
+  {
+    return 3 * dim * dim + RveStatistics<dim>::packed_size() + 2;
+  }
+  /// All of it as doubles (exact), e.g. to send it to other ranks.
+  double* pack(double* out) const
+  {
+    for (const Tensor* t : {&F, &P, &sigma})
+      for (double x : *t)
+        *out++ = x;
+    out = statistics.pack(out);
+    *out++ = solved;
+    *out++ = converged;
+    return out;
+  }
+  const double* unpack(const double* in)
+  {
+    for (Tensor* t : {&F, &P, &sigma})
+      for (double& x : *t)
+        x = *in++;
+    in = statistics.unpack(in);
+    solved = *in++ != 0.0;
+    converged = *in++ != 0.0;
+    return in;
+  }
 };
 
-/// F (Eigen) into the fix's row-major {F11, F12, F21, F22}.
-inline Mat2 macro_to_rve(const Eigen::Matrix2d& F) { return {F(0, 0), F(0, 1), F(1, 0), F(1, 1)}; }
-
-inline Eigen::Matrix2d to_eigen(const Mat2& A)
+/// macro_to_rve: an Eigen tensor in the row-major layout of RveResponse.
+template <int dim>
+std::array<double, dim * dim> macro_to_rve(const Eigen::Matrix<double, dim, dim>& A)
 {
-  Eigen::Matrix2d M;
-  M << A[0], A[1], A[2], A[3];
-  return M;
+  std::array<double, dim * dim> a;
+  for (int i = 0; i < dim; ++i)
+    for (int j = 0; j < dim; ++j)
+      a[dim * i + j] = A(i, j);
+  return a;
 }
 
-/// The fix's results as the macro scale sees them.
-inline RveResponse rve_to_macro(const LAMMPS_NS::FixRveServo::Result& r)
+/// rve_to_macro: a row-major tensor of RveResponse as an Eigen matrix.
+template <int dim>
+Eigen::Matrix<double, dim, dim> rve_to_macro(const std::array<double, dim * dim>& a)
 {
-  RveResponse out;
-  out.P = to_eigen(r.P);
-  out.sigma = to_eigen(r.sigma);
-  out.sigma_lw = to_eigen(r.sigma_lw);
-  out.fabric = to_eigen(r.contacts.fabric);
-  out.coordination = r.contacts.coordination;
-  out.mechanical_coordination = r.contacts.mechanical_coordination;
-  out.anisotropy = r.contacts.anisotropy;
-  out.packing_fraction = r.packing_fraction;
-  out.residual = r.residual;
-  out.ekin_epot = r.ekin_epot;
-  out.servo_iterations = r.servo_iterations;
-  out.dem_steps = r.dem_steps;
-  return out;
+  Eigen::Matrix<double, dim, dim> A;
+  for (int i = 0; i < dim; ++i)
+    for (int j = 0; j < dim; ++j)
+      A(i, j) = a[dim * i + j];
+  return A;
 }
 } // namespace fe2dem

@@ -1,5 +1,9 @@
 #include "servo_rve.h"
 
+#include "particle_dump.h"
+#include "servo_rve_factory.h"
+#include "template_check.h"
+
 #include <mpi.h>
 #include <unistd.h>
 
@@ -116,22 +120,57 @@ bool ServoRve::limit_steps(long step_limit)
   const long limit = (step_limit + every - 1) / every * every;
   const bool bounded = step_limit > 0 && limit < budget_;
   // Touch max_steps only for bounded solves and to undo them, so that a
-  // budget set from outside (fix_modify, e.g. an injected fault) stays.
+  // budget set from outside (set_step_budget, fix_modify) stays.
   if (bounded || limited_)
   {
     const long steps = bounded ? limit : budget_;
     if (fix_->max_steps() != steps)
-      instance_->command("fix_modify " + setup_.fix_id + " max_steps " + std::to_string(steps));
+      fix_->set_max_steps(steps);
   }
   limited_ = bounded;
   return bounded;
 }
 
-RveResponse ServoRve::solve_increment(const Eigen::Matrix2d& d_eps)
+void ServoRve::set_step_budget(long steps)
+{
+  fix_->set_max_steps(steps);
+}
+
+const RveResponse<2>& ServoRve::solve(const Tensor& F)
+{
+  solve(macro_to_rve<2>(F), step_limit_);
+  return response();
+}
+
+const RveResponse<2>& ServoRve::solve_increment(const Tensor& d_eps)
 {
   const Mat2 F_now = mode_ == HistoryMode::committed ? committed_F_ : fix_->result().F;
-  const Eigen::Matrix2d F_next = (Eigen::Matrix2d::Identity() + d_eps) * to_eigen(F_now);
-  return rve_to_macro(solve(macro_to_rve(F_next)));
+  const Tensor F_next = (Tensor::Identity() + d_eps) * rve_to_macro<2>(F_now);
+  return solve(F_next);
+}
+
+const RveResponse<2>& ServoRve::response() const
+{
+  response_ = to_response(fix_->result());
+  response_.converged = last_converged_;
+  return response_;
+}
+
+RveResponse<2> to_response(const LAMMPS_NS::FixRveServo::Result& r)
+{
+  RveResponse<2> out;
+  out.F = r.F;
+  out.P = r.P;
+  out.sigma = r.sigma;
+#define FE2DEM_FROM_FIX(kind, name, unit, description, source) out.statistics.name = source;
+  FE2DEM_RVE_STATISTICS(FE2DEM_FROM_FIX)
+#undef FE2DEM_FROM_FIX
+  return out;
+}
+
+void ServoRve::write_particles(const std::string& prefix, long timestep) const
+{
+  write_particle_dump(*fix_, prefix, timestep);
 }
 
 void ServoRve::commit()
@@ -189,5 +228,33 @@ void ServoRve::run_until_done(bool bounded)
     throw RveSolveError(fix_->status(), std::string(LAMMPS_NS::FixRveServo::status_name(
                                           fix_->status())) +
                                           ": " + fix_->failure_reason());
+}
+} // namespace fe2dem
+
+namespace fe2dem
+{
+namespace
+{
+class ServoRveFactory : public RveFactory<2>
+{
+public:
+  ServoRveFactory(const RveSetup& setup, HistoryMode mode) : setup_(setup), mode_(mode) {}
+  void check() const override { check_rve_template(setup_); }
+  std::unique_ptr<Rve<2>> create() const override { return std::make_unique<ServoRve>(setup_, mode_); }
+  std::unique_ptr<Rve<2>> restore(const std::vector<char>& state) const override
+  {
+    return ServoRve::restore(setup_, state, mode_);
+  }
+
+private:
+  RveSetup setup_;
+  HistoryMode mode_;
+};
+} // namespace
+
+template <>
+std::unique_ptr<RveFactory<2>> make_servo_rve_factory<2>(const RveSetup& setup, HistoryMode mode)
+{
+  return std::make_unique<ServoRveFactory>(setup, mode);
 }
 } // namespace fe2dem

@@ -16,8 +16,8 @@
 #include "fix_rve_servo.h"
 #include "liggghts_instance.h"
 #include "rve.h"
+#include "rve_setup.h"
 
-#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -25,29 +25,6 @@
 
 namespace fe2dem
 {
-/// What it takes to build an RVE.
-struct RveSetup
-{
-  std::string template_file;                    ///< LIGGGHTS script defining fix `fix_id`
-  std::map<std::string, std::string> variables; ///< index variables set before the script
-  std::string fix_id = "rve";
-  std::string log_file = "none";
-};
-
-/**
- * The set-up of an RVE packing made by rve_templates/build_frame.py
- * (PREFIX.rve.data, PREFIX.vars) in @p template_file, with failures flagged
- * rather than exiting, so that ServoRve::solve() can raise them.
- */
-RveSetup packing_setup(const std::string& template_file, const std::string& packing_prefix);
-
-/// Where every trial solve starts (physics.md §2.8).
-enum class HistoryMode
-{
-  committed, ///< from the last committed state ([LBS])
-  continuous ///< from wherever the previous solve ended ([LSYF])
-};
-
 /// An RVE solve that ended without convergence.
 class RveSolveError : public std::runtime_error
 {
@@ -59,7 +36,7 @@ public:
   LAMMPS_NS::FixRveServo::Status status;
 };
 
-class ServoRve : public Rve
+class ServoRve : public Rve<2>
 {
 public:
   using Result = LAMMPS_NS::FixRveServo::Result;
@@ -88,9 +65,14 @@ public:
   const Result& solve(const Mat2& F, long step_limit = 0);
   /// false if the last solve stopped at its step limit before converging.
   bool last_solve_converged() const { return last_converged_; }
-  /// Rve interface: macro_to_rve, solve, rve_to_macro.
-  RveResponse solve(const Eigen::Matrix2d& F) override { return rve_to_macro(solve(macro_to_rve(F))); }
-  RveResponse solve_increment(const Eigen::Matrix2d& d_eps) override;
+
+  // --- Rve<2> --------------------------------------------------------------
+  /// macro_to_rve, solve(F, step limit of set_step_limit), rve_to_macro.
+  const RveResponse<2>& solve(const Tensor& F) override;
+  const RveResponse<2>& solve_increment(const Tensor& d_eps) override;
+  const RveResponse<2>& response() const override;
+  void set_step_limit(long steps) override { step_limit_ = steps; }
+  void set_step_budget(long steps) override;
   /// Accepts the current state as the converged load step.
   void commit() override;
   /// Returns exactly to the last committed state.
@@ -98,14 +80,15 @@ public:
   /// The full current state as bytes (a LIGGGHTS restart image).
   std::vector<char> serialise() override;
   /// The last committed state as bytes, without touching the instance (checkpoints).
-  std::vector<char> committed_state() const;
+  std::vector<char> committed_state() const override;
+  /// Wall seconds of the last solve.
+  double last_solve_seconds() const override { return last_seconds_; }
+  void write_particles(const std::string& prefix, long timestep) const override;
 
   const Result& result() const { return fix_->result(); }
   LAMMPS_NS::FixRveServo& fix() { return *fix_; }
   LiggghtsInstance& instance() { return *instance_; }
   HistoryMode history_mode() const { return mode_; }
-  /// Wall seconds of the last solve.
-  double last_solve_seconds() const { return last_seconds_; }
   /// Bytes of the committed state image (the memory an RVE keeps besides LIGGGHTS).
   std::size_t committed_bytes() const { return committed_bytes_; }
 
@@ -131,5 +114,10 @@ private:
   long budget_ = 0;      ///< the template's step budget (max_steps), restored after bounded solves
   bool limited_ = false; ///< the fix's max_steps is currently a bound of limit_steps()
   bool last_converged_ = true;
+  long step_limit_ = 0;               ///< of set_step_limit()
+  mutable RveResponse<2> response_;   ///< rve_to_macro of the fix's result
 };
+
+/// rve_to_macro: the fix's result as the macro side sees it (rve_statistics.h).
+RveResponse<2> to_response(const LAMMPS_NS::FixRveServo::Result& r);
 } // namespace fe2dem

@@ -8,7 +8,7 @@
  */
 #pragma once
 
-#include "servo_rve.h"
+#include "rve_setup.h"
 
 #include <stdexcept>
 #include <string>

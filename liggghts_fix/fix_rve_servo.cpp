@@ -421,7 +421,7 @@ int FixRveServo::modify_param(int narg, char** arg)
     if (*end != '\0' || !(n >= 1.0))
       error->fix_error(FLERR, this, (std::string("fix_modify keyword 'max_steps': '") + arg[1] +
                                      "' is not an integer >= 1").c_str());
-    max_steps_ = static_cast<long>(n);
+    set_max_steps(static_cast<long>(n));
     return 2;
   }
   return 0;
@@ -429,6 +429,8 @@ int FixRveServo::modify_param(int narg, char** arg)
 
 void FixRveServo::set_deformation(const Mat2& F)
 {
+  // F itself starts the solve; its text form is kept as fix_modify F would
+  // leave it (restart files, scripts): %.17g reads back to the same bits.
   for (int k = 0; k < 4; ++k)
   {
     std::ostringstream s;
@@ -436,7 +438,14 @@ void FixRveServo::set_deformation(const Mat2& F)
     s << F[k];
     F_input_[k] = s.str();
   }
-  begin_solve();
+  begin_solve(&F);
+}
+
+void FixRveServo::set_max_steps(long n)
+{
+  if (n < 1)
+    error->fix_error(FLERR, this, ("max_steps = " + std::to_string(n) + " must be >= 1").c_str());
+  max_steps_ = n;
 }
 
 std::vector<Vec2> FixRveServo::frame_positions() const

@@ -133,8 +133,10 @@ public:
   void write_restart(FILE*) override;
   void restart(char*) override;
 
-  /// Starts a new solve under macro deformation F (row-major).
+  /// Starts a new solve under macro deformation F (row-major), as `fix_modify ID F` does.
   void set_deformation(const fe2dem::Mat2& F);
+  /// Step budget of the solves from now on, as `fix_modify ID max_steps` sets it. @pre n >= 1.
+  void set_max_steps(long n);
   Status status() const { return status_; }
   static const char* status_name(Status s);
   const Result& result() const { return result_; }
@@ -174,10 +176,13 @@ private:
   void parse_deformation(char** arg, const char* where);
   void error_checks();
   fe2dem::Mat2 evaluate_deformation();
+  /// @p F if det F > 0, else an error naming keyword F.
+  fe2dem::Mat2 checked_deformation(const fe2dem::Mat2& F);
   void lookup_contact_law();
 
   // --- servo state machine ----------------------------------------------
-  void begin_solve();
+  /// Starts a solve under @p F, or under keyword F's values if null.
+  void begin_solve(const fe2dem::Mat2* F = nullptr);
   void schedule_frame_move();
   /// Kinetic energy of the inner particles; flags escape and blow-up.
   double check_particles();

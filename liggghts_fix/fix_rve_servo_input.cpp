@@ -180,6 +180,11 @@ Mat2 FixRveServo::evaluate_deformation()
     else
       F[k] = std::atof(s.c_str());
   }
+  return checked_deformation(F);
+}
+
+Mat2 FixRveServo::checked_deformation(const Mat2& F)
+{
   if (!(fe2dem::det(F) > 0.0))
   {
     std::ostringstream msg;

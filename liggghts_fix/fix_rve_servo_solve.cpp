@@ -15,10 +15,10 @@
 using namespace LAMMPS_NS;
 using namespace fe2dem;
 
-void FixRveServo::begin_solve()
+void FixRveServo::begin_solve(const Mat2* F)
 {
   const Mat2 F_before = F_;
-  F_ = evaluate_deformation();
+  F_ = F ? checked_deformation(*F) : evaluate_deformation();
   membrane_stale_ = true; // its candidate search depends on F
   if (!keep_fluctuations_)
   {

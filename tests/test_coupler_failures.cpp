@@ -5,6 +5,7 @@
 //   CASE: broken_template | exploding
 #include "check.h"
 #include "rve_pool.h"
+#include "servo_rve_factory.h"
 #include "template_check.h"
 
 #include <mpi.h>
@@ -28,7 +29,8 @@ int main(int argc, char** argv)
   const std::string c = argv[1];
   Checker check("coupler failures " + c + " rank " + std::to_string(rank));
   RveSetup setup = packing_setup(argv[2], argv[3]);
-  const std::vector<QuadraturePoint> points = {{100, 0.25, 0.5, 1.0}, {101, 0.75, 0.5, 1.0}};
+  const std::vector<QuadraturePoint> points = {{100, {0.25, 0.5, 0.0}}, {101, {0.75, 0.5, 0.0}}};
+  auto factory = [&] { return make_servo_rve_factory<2>(setup, HistoryMode::committed); };
   if (c == "broken_template")
   {
     // The line of the broken command, counted here independently.
@@ -38,10 +40,10 @@ int main(int argc, char** argv)
       if (++n && l.find("hooke/stifness") != std::string::npos)
         line = n;
     check.throws_with("template error names file and line",
-                      [&] { RvePool pool(MPI_COMM_WORLD, setup, HistoryMode::committed, points); },
+                      [&] { RvePool<2> pool(MPI_COMM_WORLD, factory(), points); },
                       "broken_template.liggghts:" + std::to_string(line) + ":");
     check.throws_with("template error quotes LIGGGHTS' message",
-                      [&] { RvePool pool(MPI_COMM_WORLD, setup, HistoryMode::committed, points); },
+                      [&] { RvePool<2> pool(MPI_COMM_WORLD, factory(), points); },
                       "hooke/stifness");
   }
   else if (c == "exploding")
@@ -49,7 +51,7 @@ int main(int argc, char** argv)
     // Frame jumps in one step (move_rate huge): IP 101 is compressed by 10 % at once.
     setup.variables["move_rate"] = "1e6";
     setup.variables["max_steps"] = "200000";
-    RvePool pool(MPI_COMM_WORLD, setup, HistoryMode::committed, points);
+    RvePool<2> pool(MPI_COMM_WORLD, factory(), points);
     std::vector<Eigen::Matrix2d> F(2, Eigen::Matrix2d::Identity());
     F[1] << 0.8, 0.0, 0.0, 0.8;
     check.throws_with("exploding RVE names the IP", [&] { pool.solve(F); }, "RVE of IP 101 at (0.75, 0.5)");

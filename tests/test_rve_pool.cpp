@@ -3,6 +3,7 @@
 // runs on 1 and 2 ranks can be compared byte for byte.
 // Usage: mpirun -np N test_rve_pool TEMPLATE PACKING_PREFIX OUTFILE
 #include "rve_pool.h"
+#include "servo_rve_factory.h"
 
 #include <mpi.h>
 
@@ -27,11 +28,11 @@ int main(int argc, char** argv)
   const RveSetup setup = packing_setup(argv[1], argv[2]);
   std::vector<QuadraturePoint> points;
   for (int k = 0; k < 8; ++k)
-    points.push_back({100 + k, 0.5 * (k % 4), 0.5 * (k / 4), 1.0});
+    points.push_back({100 + k, {0.5 * (k % 4), 0.5 * (k / 4), 0.0}});
 
   try
   {
-    RvePool pool(MPI_COMM_WORLD, setup, HistoryMode::committed, points);
+    RvePool<2> pool(MPI_COMM_WORLD, make_servo_rve_factory<2>(setup, HistoryMode::committed), points);
     auto F_at = [&](int it) {
       std::vector<Eigen::Matrix2d> F(points.size());
       for (std::size_t k = 0; k < F.size(); ++k)
@@ -40,14 +41,15 @@ int main(int argc, char** argv)
       return F;
     };
     std::FILE* out = rank == 0 ? std::fopen(argv[3], "w") : nullptr;
-    auto dump = [&](int it, const std::vector<RveResponse>& r) {
+    auto dump = [&](int it, const std::vector<RveResponse<2>>& r) {
       if (!out)
         return;
       for (std::size_t k = 0; k < r.size(); ++k)
         std::fprintf(out, "it %d ip %ld P %a %a %a %a sigma %a %a %a %a coord %a aniso %a steps %ld\n",
-                     it, points[k].id, r[k].P(0, 0), r[k].P(0, 1), r[k].P(1, 0), r[k].P(1, 1),
-                     r[k].sigma(0, 0), r[k].sigma(0, 1), r[k].sigma(1, 0), r[k].sigma(1, 1),
-                     r[k].coordination, r[k].anisotropy, r[k].dem_steps);
+                     it, points[k].id, r[k].P[0], r[k].P[1], r[k].P[2], r[k].P[3],
+                     r[k].sigma[0], r[k].sigma[1], r[k].sigma[2], r[k].sigma[3],
+                     r[k].statistics.coordination, r[k].statistics.anisotropy,
+                     r[k].statistics.dem_steps);
     };
     dump(1, pool.solve(F_at(1)));
     pool.commit();

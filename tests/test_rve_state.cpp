@@ -107,16 +107,18 @@ void check_history(Checker& check)
 void check_increment(Checker& check)
 {
   ServoRve a(setup()), b(setup());
-  const Eigen::Matrix2d sigma1 = to_eigen(a.solve(F1).sigma);
+  const Eigen::Matrix2d sigma1 = rve_to_macro<2>(a.solve(F1).sigma);
   b.solve(F1);
   Eigen::Matrix2d d_eps;
   d_eps << -0.001, 0.0005, 0.0005, -0.002;
-  const RveResponse ra = a.solve_increment(d_eps);
-  const Eigen::Matrix2d F_next = (Eigen::Matrix2d::Identity() + d_eps) * to_eigen(F1);
-  const RveResponse rb = b.solve(F_next);
+  const RveResponse<2> ra = a.solve_increment(d_eps);
+  const Eigen::Matrix2d F_next = (Eigen::Matrix2d::Identity() + d_eps) * rve_to_macro<2>(F1);
+  const RveResponse<2> rb = b.solve(F_next);
   check.truth("solve_increment = solve((I + d_eps) F), bitwise",
-              ra.P == rb.P && ra.sigma == rb.sigma && ra.dem_steps == rb.dem_steps);
-  check.truth("the increment changed the stress", (ra.sigma - sigma1).norm() > 1e-3 * sigma1.norm());
+              ra.P == rb.P && ra.sigma == rb.sigma &&
+                ra.statistics.dem_steps == rb.statistics.dem_steps);
+  check.truth("the increment changed the stress",
+              (rve_to_macro<2>(ra.sigma) - sigma1).norm() > 1e-3 * sigma1.norm());
 }
 } // namespace
 

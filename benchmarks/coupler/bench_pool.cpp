@@ -5,6 +5,7 @@
 // Usage: mpirun -np P bench_pool TEMPLATE PACKING_PREFIX N ITERATIONS MODE
 //   MODE: committed | continuous
 #include "rve_pool.h"
+#include "servo_rve_factory.h"
 
 #include <mpi.h>
 
@@ -46,10 +47,10 @@ int main(int argc, char** argv)
                                                                : HistoryMode::continuous;
   std::vector<QuadraturePoint> points;
   for (int k = 0; k < n; ++k)
-    points.push_back({k, static_cast<double>(k % 8), static_cast<double>(k / 8), 1.0});
+    points.push_back({k, {static_cast<double>(k % 8), static_cast<double>(k / 8), 0.0}});
 
   const double rss0 = resident_bytes();
-  RvePool pool(MPI_COMM_WORLD, setup, mode, points);
+  RvePool<2> pool(MPI_COMM_WORLD, make_servo_rve_factory<2>(setup, mode), points);
   const double rss1 = resident_bytes();
   double per_rve = pool.n_local() > 0 ? (rss1 - rss0) / pool.n_local() : 0.0, per_rve_max = 0.0;
   MPI_Reduce(&per_rve, &per_rve_max, 1, MPI_DOUBLE, MPI_MAX, 0, MPI_COMM_WORLD);
@@ -68,7 +69,7 @@ int main(int argc, char** argv)
     const auto r = pool.solve(F);
     pool.commit();
     for (const auto& x : r)
-      steps += x.dem_steps;
+      steps += x.statistics.dem_steps;
     double busy = pool.last_local_seconds(), busy_max = 0.0, busy_sum = 0.0;
     MPI_Allreduce(&busy, &busy_max, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
     MPI_Allreduce(&busy, &busy_sum, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);

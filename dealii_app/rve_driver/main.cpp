@@ -1,5 +1,5 @@
 // fe2dem-rve FILE.prm: one RVE along a macro path; writes OUTPUT/rve.csv.
-#include "rve_parameters.h"
+#include "path_parameters.h"
 #include "rve_path_runner.h"
 
 #include <deal.II/base/exceptions.h>

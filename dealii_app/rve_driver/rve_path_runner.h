@@ -10,7 +10,7 @@
  */
 #pragma once
 
-#include "rve_parameters.h"
+#include "path_parameters.h"
 #include "servo_rve.h"
 
 #include <fstream>

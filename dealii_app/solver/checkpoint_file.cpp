@@ -16,7 +16,9 @@ namespace fe2dem::macro
 {
 namespace
 {
-constexpr int format_version = 1;
+// 1: IP state F, P, fabric, F_last_step, J_ic, coordination, anisotropy,
+//    DEM steps, servo iterations; 2: IpState::pack() (every RVE statistic).
+constexpr int format_version = 2;
 
 void check(herr_t status, const std::string& what, const std::string& file)
 {
@@ -154,8 +156,15 @@ CheckpointData read_checkpoint(const std::string& file)
   CheckpointData d;
   try
   {
-    if (read_attribute<int>(h, "format", H5T_NATIVE_INT, file) != format_version)
-      throw std::runtime_error("checkpoint '" + file + "' has an unknown format version");
+    const int format = read_attribute<int>(h, "format", H5T_NATIVE_INT, file);
+    if (format != format_version)
+      throw std::runtime_error(
+        "checkpoint '" + file + "' has format " + std::to_string(format) + ", this fe2dem reads format " +
+        std::to_string(format_version) +
+        (format < format_version ? " (it was written by an earlier fe2dem, before the IP state held "
+                                   "every RVE statistic): finish that run with the fe2dem that "
+                                   "started it, or start it again without --resume"
+                                 : " (it was written by a newer fe2dem): resume with that one"));
     d.step = read_attribute<int>(h, "step", H5T_NATIVE_INT, file);
     d.stage = read_attribute<int>(h, "stage", H5T_NATIVE_INT, file);
     d.step_in_stage = read_attribute<int>(h, "step_in_stage", H5T_NATIVE_INT, file);

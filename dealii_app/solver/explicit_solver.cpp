@@ -1,6 +1,9 @@
 #include "explicit_solver.h"
 
 #include "checkpoint_file.h"
+#include "neo_hookean.h"
+#include "rve_material.h"
+#include "servo_rve_factory.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -30,16 +33,14 @@ using namespace dealii;
 
 template <int dim>
 ExplicitSolver<dim>::ExplicitSolver(const Parameters& parameters, bool resume)
-  : prm_(parameters), material_{parameters.material.shear_modulus, parameters.material.lame_lambda},
-    fe_(FE_Q<dim>(1), dim), pcout_(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0),
+  : prm_(parameters), fe_(FE_Q<dim>(1), dim), quadrature_(2),
+    fe_values_F_(fe_, quadrature_, update_gradients),
+    fe_values_f_int_(fe_, quadrature_, update_gradients | update_JxW_values),
+    pcout_(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0),
     timer_(pcout_, TimerOutput::never, TimerOutput::wall_times), resume_(resume),
     checkpoint_directory_(parameters.output_directory + "/checkpoints")
 {
   rank_ = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-  std::istringstream s(prm_.loading.affine_F);
-  for (unsigned int i = 0; i < dim; ++i)
-    for (unsigned int j = 0; j < dim; ++j)
-      s >> affine_F_[i][j];
 }
 
 // Before the expensive part: the directory exists and is writable, and the
@@ -48,15 +49,15 @@ template <int dim>
 void ExplicitSolver<dim>::prepare_output_directory()
 {
   for (const unsigned int p : prm_.particle_dumps.points)
-    if (p >= history_.size())
+    if (p >= ip_.size())
       throw std::runtime_error("subsection Particle dumps: 'Points' lists " + std::to_string(p) +
-                               ", but the mesh has " + std::to_string(history_.size()) +
-                               " quadrature points (0.." + std::to_string(history_.size() - 1) + ")");
-  if (prm_.faults.inject_ip >= static_cast<int>(history_.size()))
+                               ", but the mesh has " + std::to_string(ip_.size()) +
+                               " quadrature points (0.." + std::to_string(ip_.size() - 1) + ")");
+  if (prm_.faults.inject_ip >= static_cast<int>(ip_.size()))
     throw std::runtime_error("subsection Faults: 'Inject fault' names IP " +
                              std::to_string(prm_.faults.inject_ip) + ", but the mesh has " +
-                             std::to_string(history_.size()) + " quadrature points");
-  if (!prm_.particle_dumps.points.empty() && prm_.material.type != "RVE")
+                             std::to_string(ip_.size()) + " quadrature points");
+  if (!prm_.particle_dumps.points.empty() && prm_.material.type != MaterialParameters::Type::rve)
     throw std::runtime_error("subsection Particle dumps: 'Points' needs 'Type' = RVE in "
                              "subsection Material");
   std::string problem;
@@ -82,32 +83,28 @@ void ExplicitSolver<dim>::prepare_output_directory()
 }
 
 template <int dim>
-void ExplicitSolver<dim>::make_rve_pool(const std::string& checkpoint)
+void ExplicitSolver<dim>::make_material(const std::string& checkpoint)
 {
-  std::vector<fe2dem::QuadraturePoint> points;
-  for (std::size_t p = 0; p < history_.size(); ++p)
-    points.push_back({static_cast<long>(p), history_[p].position[0], history_[p].position[1], 1.0});
-  const fe2dem::HistoryMode mode = prm_.material.history == "committed"
-                                     ? fe2dem::HistoryMode::committed
-                                     : fe2dem::HistoryMode::continuous;
+  const auto& m = prm_.material;
+  if (m.type == MaterialParameters::Type::neo_hookean)
+  {
+    material_ = std::make_unique<NeoHookeanMaterial<dim>>(m.shear_modulus, m.lame_lambda, m.density);
+    return;
+  }
   const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-  if (n_ranks > points.size())
+  if (n_ranks > ip_.size())
     throw std::runtime_error("running on " + std::to_string(n_ranks) + " MPI ranks, but the mesh has only " +
-                             std::to_string(points.size()) + " quadrature points (RVEs): use at most "
-                             "mpirun -np " + std::to_string(points.size()));
-  if (checkpoint.empty())
-  {
-    pcout_ << "creating " << points.size() << " RVEs on " << n_ranks << " rank(s)" << std::endl;
-    pool_ = std::make_unique<fe2dem::RvePool>(MPI_COMM_WORLD, prm_.rve.setup("none"), mode, points);
-  }
-  else
-  {
-    pcout_ << "restoring " << points.size() << " RVEs on " << n_ranks << " rank(s)" << std::endl;
-    pool_ = std::make_unique<fe2dem::RvePool>(
-      MPI_COMM_WORLD, prm_.rve.setup("none"), mode, points,
-      [&](std::size_t k) { return read_rve_state(checkpoint, k); }, static_cast<int>(step_));
-  }
-  pool_->set_skip_tolerance(prm_.material.skip_tolerance);
+                             std::to_string(ip_.size()) + " quadrature points (RVEs): use at most "
+                             "mpirun -np " + std::to_string(ip_.size()));
+  const std::shared_ptr<const fe2dem::RveFactory<dim>> factory =
+    fe2dem::make_servo_rve_factory<dim>(prm_.rve.setup("none"), m.history);
+  pcout_ << (checkpoint.empty() ? "creating " : "restoring ") << ip_.size() << " RVEs on " << n_ranks
+         << " rank(s)" << std::endl;
+  typename fe2dem::RvePool<dim>::StateSource states;
+  if (!checkpoint.empty())
+    states = [&](std::size_t k) { return read_rve_state(checkpoint, k); };
+  material_ = std::make_unique<RveMaterial<dim>>(factory, ip_, m.stability_modulus, m.density,
+                                                 m.skip_tolerance, states, static_cast<int>(step_));
 }
 
 // summary.csv and history.h5: new, or as far as the checkpoint got.
@@ -128,10 +125,11 @@ void ExplicitSolver<dim>::open_output_files(const std::string& checkpoint)
   const std::string history = prm_.output_directory + "/history.h5";
   if (checkpoint.empty())
   {
-    std::vector<std::array<double, 2>> positions;
-    for (const PointHistory& h : history_)
-      positions.push_back({h.position[0], h.position[1]});
-    history_file_ = std::make_unique<HistoryWriter>(history, positions);
+    std::vector<double> positions;
+    for (const IpState<dim>& p : ip_)
+      for (unsigned int d = 0; d < dim; ++d)
+        positions.push_back(p.position[d]);
+    history_file_ = std::make_unique<HistoryWriter>(history, positions, dim);
   }
   else
     history_file_ = restore_history(checkpoint, history);
@@ -152,23 +150,26 @@ void ExplicitSolver<dim>::make_grid()
   const BoundingBox<dim> box = GridTools::compute_bounding_box(triangulation_);
   lo_ = box.get_boundary_points().first;
   hi_ = box.get_boundary_points().second;
-  if (prm_.loading.boundary == "biaxial")
-  {
-    // The biaxial conditions act on the four edges of the bounding box.
-    unsigned int n[4] = {0, 0, 0, 0};
-    for (const auto& v : triangulation_.get_vertices())
-    {
-      const Edges e = edges_of(v);
-      n[0] += e.left, n[1] += e.right, n[2] += e.bottom, n[3] += e.top;
-    }
-    const char* names[4] = {"left", "right", "bottom", "top"};
-    for (int k = 0; k < 4; ++k)
-      if (n[k] < 2)
-        throw std::runtime_error("'Boundary' = biaxial needs a rectangular specimen, but the mesh has " +
-                                 std::to_string(n[k]) + " node(s) on the " + names[k] +
-                                 " edge of its bounding box" +
-                                 (g.mesh_file.empty() ? "" : " (mesh file '" + g.mesh_file + "')"));
-  }
+  mark_box_faces();
+}
+
+// Load cases act on boundary ids; a mesh file's own ids are replaced.
+template <int dim>
+void ExplicitSolver<dim>::mark_box_faces()
+{
+  const double tol = 1e-10 * (hi_ - lo_).norm();
+  for (const auto& cell : triangulation_.active_cell_iterators())
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary())
+      {
+        const Point<dim> c = cell->face(f)->center();
+        const unsigned int id = c[0] < lo_[0] + tol   ? BoxFace::left
+                                : c[0] > hi_[0] - tol ? BoxFace::right
+                                : c[1] < lo_[1] + tol ? BoxFace::bottom
+                                : c[1] > hi_[1] - tol ? BoxFace::top
+                                                      : 4u; // other boundary
+        cell->face(f)->set_boundary_id(static_cast<types::boundary_id>(id));
+      }
 }
 
 template <int dim>
@@ -195,47 +196,31 @@ void ExplicitSolver<dim>::read_mesh_file()
 }
 
 template <int dim>
-typename ExplicitSolver<dim>::Edges ExplicitSolver<dim>::edges_of(const Point<dim>& X) const
-{
-  const double tol = 1e-10 * (hi_ - lo_).norm();
-  return {X[0] < lo_[0] + tol, X[0] > hi_[0] - tol, X[1] < lo_[1] + tol, X[1] > hi_[1] - tol};
-}
-
-template <int dim>
 void ExplicitSolver<dim>::setup_system()
 {
   dof_handler_.reinit(triangulation_);
   dof_handler_.distribute_dofs(fe_);
   const unsigned int n = dof_handler_.n_dofs();
-  dof_position_.resize(n);
-  DoFTools::map_dofs_to_support_points(MappingQ1<dim>(), dof_handler_, dof_position_);
-  dof_component_.assign(n, 0);
-  std::vector<types::global_dof_index> dofs(fe_.dofs_per_cell);
-  for (const auto& cell : dof_handler_.active_cell_iterators())
-  {
-    cell->get_dof_indices(dofs);
-    for (unsigned int i = 0; i < fe_.dofs_per_cell; ++i)
-      dof_component_[dofs[i]] = fe_.system_to_component_index(i).first;
-  }
+  dof_map_.reinit(dof_handler_);
   for (auto* v : {&mass_, &displacement_, &velocity_, &f_int_, &f_ext_})
     v->reinit(n);
-  const QGauss<dim> quadrature(2);
-  history_.resize(triangulation_.n_active_cells() * quadrature.size());
-  FEValues<dim> fe_values(fe_, quadrature, update_quadrature_points);
+  ip_.resize(triangulation_.n_active_cells() * quadrature_.size());
+  FEValues<dim> fe_values(fe_, quadrature_, update_quadrature_points);
   unsigned int point = 0;
   for (const auto& cell : dof_handler_.active_cell_iterators())
   {
     fe_values.reinit(cell);
-    for (unsigned int q = 0; q < quadrature.size(); ++q)
-      history_[point++].position = fe_values.quadrature_point(q);
+    for (unsigned int q = 0; q < quadrature_.size(); ++q)
+      ip_[point++].position = fe_values.quadrature_point(q);
   }
+  load_case_ = make_load_case<dim>(dof_map_, hi_[1] - lo_[1], prm_);
 }
 
 // (M5): row-sum-free diagonal scaling of the consistent mass.
 template <int dim>
 void ExplicitSolver<dim>::assemble_lumped_mass()
 {
-  const QGauss<dim> quadrature(2);
+  const QGauss<dim>& quadrature = quadrature_;
   FEValues<dim> fe_values(fe_, quadrature, update_values | update_JxW_values);
   std::vector<types::global_dof_index> dofs(fe_.dofs_per_cell);
   for (const auto& cell : dof_handler_.active_cell_iterators())
@@ -262,59 +247,33 @@ void ExplicitSolver<dim>::assemble_lumped_mass()
   }
 }
 
-// F at every quadrature point, then P from the material: the analytic law
-// or the RVE pool (macro_to_rve / rve_to_macro, all points at once).
+// F at every quadrature point, then P from the material (material.h).
 template <int dim>
 void ExplicitSolver<dim>::update_stresses()
 {
-  const QGauss<dim> quadrature(2);
-  FEValues<dim> fe_values(fe_, quadrature, update_gradients);
   const FEValuesExtractors::Vector u(0);
-  std::vector<Tensor<2, dim>> grad_u(quadrature.size());
+  std::vector<Tensor<2, dim>> grad_u(quadrature_.size());
   unsigned int point = 0;
   for (const auto& cell : dof_handler_.active_cell_iterators())
   {
-    fe_values.reinit(cell);
-    fe_values[u].get_function_gradients(displacement_, grad_u);
-    for (unsigned int q = 0; q < quadrature.size(); ++q, ++point)
+    fe_values_F_.reinit(cell);
+    fe_values_F_[u].get_function_gradients(displacement_, grad_u);
+    for (unsigned int q = 0; q < quadrature_.size(); ++q, ++point)
     {
-      history_[point].F = unit_symmetric_tensor<dim>() + grad_u[q];
-      if (!(determinant(history_[point].F) > 0.0))
+      ip_[point].F = unit_symmetric_tensor<dim>() + grad_u[q];
+      if (!(determinant(ip_[point].F) > 0.0))
         throw std::runtime_error("det F <= 0 at a quadrature point of cell " +
                                  std::to_string(cell->active_cell_index()) +
                                  ": the mesh inverted; use more load steps or a smaller "
                                  "'Safety factor'");
     }
   }
-  if (!pool_)
-  {
-    for (PointHistory& h : history_)
-      h.P = material_.piola(h.F);
-    return;
-  }
   TimerOutput::Scope t(timer_, "RVE solves");
-  std::vector<Eigen::Matrix2d> F(history_.size());
-  for (std::size_t p = 0; p < history_.size(); ++p)
-    F[p] << history_[p].F[0][0], history_[p].F[0][1], history_[p].F[1][0], history_[p].F[1][1];
-  const std::vector<fe2dem::RveResponse> r = pool_->solve(F);
-  for (std::size_t p = 0; p < history_.size(); ++p)
-  {
-    PointHistory& h = history_[p];
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        h.P[i][j] = r[p].P(i, j);
-    h.coordination = r[p].coordination;
-    h.anisotropy = r[p].anisotropy;
-    h.servo_iterations = r[p].servo_iterations;
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        h.fabric[i][j] = r[p].fabric(i, j);
-    h.dem_steps = r[p].dem_steps;
-    dem_steps_in_step_ += r[p].dem_steps;
-    rve_solves_in_step_ += r[p].solved;
-    unconverged_in_step_ += !r[p].converged;
-  }
-  rve_seconds_in_step_ += pool_->last_local_seconds();
+  const EvaluationCost c = material_->evaluate(ip_);
+  cost_in_step_.dem_steps += c.dem_steps;
+  cost_in_step_.solves += c.solves;
+  cost_in_step_.unconverged += c.unconverged;
+  cost_in_step_.seconds += c.seconds;
 }
 
 template <int dim>
@@ -322,80 +281,50 @@ void ExplicitSolver<dim>::assemble_internal_force()
 {
   update_stresses();
   TimerOutput::Scope t(timer_, "assemble f_int");
-  const QGauss<dim> quadrature(2);
-  FEValues<dim> fe_values(fe_, quadrature, update_gradients | update_JxW_values);
   const FEValuesExtractors::Vector u(0);
   std::vector<types::global_dof_index> dofs(fe_.dofs_per_cell);
   f_int_ = 0.0;
   unsigned int point = 0;
   for (const auto& cell : dof_handler_.active_cell_iterators())
   {
-    fe_values.reinit(cell);
+    fe_values_f_int_.reinit(cell);
     cell->get_dof_indices(dofs);
-    for (unsigned int q = 0; q < quadrature.size(); ++q, ++point)
+    for (unsigned int q = 0; q < quadrature_.size(); ++q, ++point)
       for (unsigned int i = 0; i < fe_.dofs_per_cell; ++i)
         f_int_[dofs[i]] +=
-          scalar_product(history_[point].P, fe_values[u].gradient(i, q)) * fe_values.JxW(q);
+          scalar_product(ip_[point].P, fe_values_f_int_[u].gradient(i, q)) * fe_values_f_int_.JxW(q);
   }
 }
 
-// (M3)-(M9): central differences with mass-proportional damping; damping
-// from the Rayleigh quotient (M6, M7); time step (M8) capped by the
-// stability limit 2/omega_max of the mesh (omega_max ~ 2 c sqrt(dim)/h),
-// because with physical lumped masses the Rayleigh quotient gives the
-// lowest, not the highest, frequency.
+// One load step of dynamic relaxation (dynamic_relaxation.h) with the
+// multiple-time-stepping policy: bounded RVE solves until (M9) first holds,
+// then full ones until it holds again, so that a step ends on relaxed RVEs.
+// Too few DEM steps per iteration let the RVE stresses lag the macro motion
+// so much that (M9) is never reached (2x4 with 10 steps: benchmarks/perf);
+// after max_bounded iterations the step continues with full solves.
 template <int dim>
 unsigned int ExplicitSolver<dim>::relax_load_step()
 {
   const DynamicRelaxation& dr = prm_.relaxation;
   velocity_ = 0.0;
   apply_boundary_values();
-  const double wave_speed = pool_ ? std::sqrt(prm_.material.stability_modulus / prm_.material.density)
-                                  : material_.wave_speed(prm_.material.density);
-  const double omega_max = 2.0 * std::sqrt(double(dim)) * wave_speed / h_min_;
-  const double dt_stable = dr.safety_factor * 2.0 / omega_max;
-  double e_max = 0.0;
-  // Multiple time stepping: bounded RVE solves until (M9) first holds, then
-  // full ones until it holds again, so that a step ends on relaxed RVEs.
-  // Too few DEM steps per iteration let the RVE stresses lag the macro motion
-  // so much that (M9) is never reached (2x4 with 10 steps: benchmarks/perf);
-  // after max_bounded iterations the step continues with full solves.
+  integrator_->start();
   const unsigned int max_bounded = 1000;
-  bool bounded = pool_ && prm_.material.steps_per_iteration > 0;
-  if (pool_)
-    pool_->set_step_limit(bounded ? prm_.material.steps_per_iteration : 0);
+  bool bounded = material_->has_step_limit() && prm_.material.steps_per_iteration > 0;
+  if (material_->has_step_limit())
+    material_->set_step_limit(bounded ? prm_.material.steps_per_iteration : 0);
   for (unsigned int it = 1; it <= dr.max_iterations; ++it)
   {
     if (const int signal = stop_signal_received())
       throw StopSignal{signal};
     assemble_internal_force();
-    assemble_external_force();
-    double num = 0.0, den = 0.0;
-    for (types::global_dof_index i = 0; i < mass_.size(); ++i)
-      if (!boundary_values_.count(i))
-      {
-        num += displacement_[i] * f_int_[i];
-        den += mass_[i] * displacement_[i] * displacement_[i];
-      }
-    const double omega = (num > 0.0 && den > 0.0) ? std::sqrt(num / den) : omega_max; // guard of (M6)
-    const double xi = dr.damping_ratio, alpha = 2.0 * xi * omega;
-    const double dt = std::min(dt_stable, dr.safety_factor * 2.0 / omega * (std::sqrt(xi * xi + 1.0) - xi));
-    double e_kin = 0.0;
-    for (types::global_dof_index i = 0; i < mass_.size(); ++i)
-    {
-      if (boundary_values_.count(i))
-        continue;
-      velocity_[i] = ((2.0 - dt * alpha) * velocity_[i] + 2.0 * dt * (f_ext_[i] - f_int_[i]) / mass_[i]) /
-                     (2.0 + dt * alpha);
-      displacement_[i] += dt * velocity_[i];
-      e_kin += 0.5 * mass_[i] * velocity_[i] * velocity_[i];
-    }
-    e_max = std::max(e_max, e_kin);
-    const bool relaxed = it >= dr.min_iterations && (e_max == 0.0 || e_kin <= dr.kinetic_tolerance * e_max);
+    load_case_->external_force(stage_, load_fraction_, dof_handler_, displacement_, f_ext_);
+    const double e_kin = integrator_->advance(displacement_, velocity_, f_int_, f_ext_, boundary_values_);
+    const bool relaxed = integrator_->converged(it, e_kin);
     if (bounded && (relaxed || it >= max_bounded))
     {
       bounded = false;
-      pool_->set_step_limit(0);
+      material_->set_step_limit(0);
     }
     else if (relaxed)
     {

@@ -4,28 +4,35 @@
  * Gauss points, lumped mass (M5) and dynamic relaxation (M3)-(M9) per load
  * step, in the style of the deal.II tutorials (step-18, step-44).
  *
- * The constitutive response comes from the built-in neo-Hookean law or from
- * one RVE per quadrature point (fe2dem::RvePool). Under MPI every rank runs
- * the same (small) macro problem and the pool spreads the RVEs over the
+ * Its seams: the constitutive response comes from a Material (material.h:
+ * the built-in neo-Hookean law or one RVE per quadrature point), the
+ * boundary from a LoadCase (load_case.h) and each iteration from the
+ * integrator (dynamic_relaxation.h). Under MPI every rank runs the same
+ * (small) macro problem and the RVE material spreads the RVEs over the
  * ranks, so results do not depend on the number of ranks; output on rank 0.
  */
 #pragma once
 
-#include "macro_parameters.h"
-#include "neo_hookean.h"
+#include "dynamic_relaxation.h"
 #include "history_writer.h"
-#include "rve_pool.h"
+#include "ip_state.h"
+#include "load_case.h"
+#include "macro_parameters.h"
+#include "material.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
 
 #include <fstream>
 #include <map>
+#include <memory>
 #include <vector>
 
 namespace fe2dem::macro
@@ -46,51 +53,34 @@ public:
   static void install_signal_handlers();
 
 private:
-  /// Per quadrature point: what the material returned at the last f_int.
-  struct PointHistory
-  {
-    dealii::Tensor<2, dim> F, P;
-    dealii::Point<dim> position;
-    double J_ic = 1.0;            ///< det F after the isotropic stage
-    double coordination = 0.0, anisotropy = 0.0;
-    dealii::Tensor<2, dim> fabric;
-    long dem_steps = 0;           ///< DEM steps of the last RVE solve
-    long servo_iterations = 0;
-    dealii::Tensor<2, dim> F_last_step = dealii::unit_symmetric_tensor<dim>(); ///< F at the last converged step
-  };
   /// Everything of the macro state that a converged load step leaves behind.
   struct ConvergedState
   {
     unsigned int stage = 1, step_in_stage = 0, step = 0;
-    double u_top_ic = 0.0, h_ic = 0.0;
+    typename LoadCase<dim>::Reference reference;
     dealii::Vector<double> displacement;
-    std::vector<PointHistory> history;
+    std::vector<IpState<dim>> ip;
   };
 
   void make_grid();
   void read_mesh_file();
-  /// Which edges of the reference mesh's bounding box @p X lies on.
-  struct Edges
-  {
-    bool left, right, bottom, top;
-  };
-  Edges edges_of(const dealii::Point<dim>& X) const;
+  /// Boundary ids of load_case.h (BoxFace) from the bounding box; other boundary faces get 4.
+  void mark_box_faces();
   void setup_system();
   void assemble_lumped_mass();
   void prepare_output_directory();
   /// @param checkpoint restore the RVEs from this checkpoint (empty: build and relax them).
-  void make_rve_pool(const std::string& checkpoint);
+  void make_material(const std::string& checkpoint);
   void apply_boundary_values();
   void update_stresses();
   void assemble_internal_force();
-  void assemble_external_force();
   /// One load step, cut into halves and retried after RVE failures (subsection Faults).
   unsigned int solve_load_step();
   unsigned int relax_load_step();
   void inject_fault_if_due(bool first_attempt);
   void finish_isotropic_stage();
-  /// Mean vertical displacement of the top edge's nodes.
-  double mean_top_displacement() const;
+  /// The step's F becomes every IP's F_last_step (after its output).
+  void close_load_step();
 
   // --- output of a converged load step (explicit_solver_output.cpp) --------
   /// What one converged step writes: means over the IPs, cell averages, records.
@@ -101,34 +91,21 @@ private:
     double coordination_mean = 0.0, anisotropy_mean = 0.0;
     /// Per cell, the average over its quadrature points (VTU cell data).
     dealii::Vector<double> s11, s22, ratio, j_rel, coordination, anisotropy, eq_strain;
-    std::vector<IpRecord> records; ///< one per IP, for history.h5
+    std::vector<IpRecord<dim>> records; ///< one per IP, for history.h5
   };
   void output_step(unsigned int iterations);
-  /// Also moves every IP's F_last_step to its current F.
-  StepStatistics gather_step_statistics();
-  struct EdgeResponse
-  {
-    double top_reaction = 0.0; ///< vertical internal force summed over the top edge
-    /// Largest deviation of the displacement from the affine field relative to
-    /// the largest affine displacement (only with `Boundary = affine`, else 0).
-    double affine_deviation = 0.0;
-  };
-  EdgeResponse top_reaction_and_affine_deviation() const;
+  StepStatistics gather_step_statistics() const;
   void write_summary_row(const StepStatistics& stats, unsigned int iterations, double axial,
-                         const EdgeResponse& edges,
                          const dealii::Utilities::MPI::MinMaxAvg& rve_seconds);
   void write_vtu(const StepStatistics& stats);
   void open_output_files(const std::string& checkpoint);
 
   // --- checkpoints (explicit_solver_checkpoint.cpp) -------------------------
   void save_converged_state();
-  void restore_converged_state();
   /// Checkpoint of the last converged load step (collective); returns its path.
   std::string write_checkpoint();
   /// Restores the state of the newest checkpoint; returns its path.
   std::string resume_from_checkpoint();
-  std::vector<double> pack_ip_state() const;
-  void unpack_ip_state(const std::vector<double>& state, std::size_t width);
   /// The stop signal that arrived on any rank, 0 if none (collective).
   int stop_signal_received() const;
   struct StopSignal
@@ -143,28 +120,25 @@ private:
   unsigned int stage_ = 1, step_in_stage_ = 0, step_ = 0;
   /// Load factor of the current stage in [0, 1] at the end of the current (sub)step.
   double load_fraction_ = 0.0;
-  unsigned int steps_in_stage(unsigned int stage) const;
   /// Load steps of the whole run (for the ETA of the progress line).
   unsigned int total_steps() const;
-  double u_top_ic_ = 0.0, h_ic_ = 0.0; ///< top displacement and height after stage 1
-  long dem_steps_in_step_ = 0;
-  long rve_solves_in_step_ = 0;          ///< RVE solves (skipped ones not counted)
-  long unconverged_in_step_ = 0;         ///< bounded solves that stopped at their step limit
-  double rve_seconds_in_step_ = 0.0;     ///< this rank's wall seconds in RVE solves
-  std::unique_ptr<fe2dem::RvePool> pool_;
-  std::unique_ptr<HistoryWriter> history_file_;
+  EvaluationCost cost_in_step_; ///< of the material, summed over the step's evaluations
 
   const Parameters& prm_;
-  NeoHookean<dim> material_;
   dealii::Triangulation<dim> triangulation_;
   dealii::FESystem<dim> fe_;
   dealii::DoFHandler<dim> dof_handler_;
-  std::vector<dealii::Point<dim>> dof_position_; ///< reference position of each dof's node
-  std::vector<unsigned int> dof_component_;
+  const dealii::QGauss<dim> quadrature_;
+  dealii::FEValues<dim> fe_values_F_;     ///< gradients: F at the IPs
+  dealii::FEValues<dim> fe_values_f_int_; ///< gradients and JxW: f_int
+  DofMap<dim> dof_map_;
+  std::unique_ptr<LoadCase<dim>> load_case_;
+  std::unique_ptr<Material<dim>> material_;
+  std::unique_ptr<DynamicRelaxationIntegrator> integrator_;
+  std::unique_ptr<HistoryWriter> history_file_;
   std::map<dealii::types::global_dof_index, double> boundary_values_;
   dealii::Vector<double> mass_, displacement_, velocity_, f_int_, f_ext_;
-  std::vector<PointHistory> history_; ///< cell-major, 2x2 points per cell
-  dealii::Tensor<2, dim> affine_F_;
+  std::vector<IpState<dim>> ip_; ///< cell by cell, quadrature_.size() per cell
   double h_min_ = 0.0;
   dealii::Point<dim> lo_, hi_; ///< bounding box of the reference mesh
   int rank_ = 0;

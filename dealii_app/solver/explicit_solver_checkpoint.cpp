@@ -86,47 +86,7 @@ int ExplicitSolver<dim>::stop_signal_received() const
 template <int dim>
 void ExplicitSolver<dim>::save_converged_state()
 {
-  converged_ = {stage_, step_in_stage_, step_, u_top_ic_, h_ic_, displacement_, history_};
-}
-
-// Per IP: F, P, fabric, F_last_step (dim x dim each), J_ic, coordination,
-// anisotropy, DEM steps, servo iterations.
-template <int dim>
-std::vector<double> ExplicitSolver<dim>::pack_ip_state() const
-{
-  std::vector<double> v;
-  for (const PointHistory& h : converged_.history)
-  {
-    for (const Tensor<2, dim>* t : {&h.F, &h.P, &h.fabric, &h.F_last_step})
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          v.push_back((*t)[i][j]);
-    for (double x : {h.J_ic, h.coordination, h.anisotropy, static_cast<double>(h.dem_steps),
-                     static_cast<double>(h.servo_iterations)})
-      v.push_back(x);
-  }
-  return v;
-}
-
-template <int dim>
-void ExplicitSolver<dim>::unpack_ip_state(const std::vector<double>& v, std::size_t width)
-{
-  if (width != 4 * dim * dim + 5 || v.size() != width * history_.size())
-    throw std::runtime_error("--resume: the checkpoint holds " + std::to_string(width ? v.size() / width : 0) +
-                             " quadrature points, the mesh has " + std::to_string(history_.size()));
-  auto x = v.begin();
-  for (PointHistory& h : history_)
-  {
-    for (Tensor<2, dim>* t : {&h.F, &h.P, &h.fabric, &h.F_last_step})
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          (*t)[i][j] = *x++;
-    h.J_ic = *x++;
-    h.coordination = *x++;
-    h.anisotropy = *x++;
-    h.dem_steps = static_cast<long>(*x++);
-    h.servo_iterations = static_cast<long>(*x++);
-  }
+  converged_ = {stage_, step_in_stage_, step_, load_case_->reference(), displacement_, ip_};
 }
 
 template <int dim>
@@ -135,8 +95,7 @@ std::string ExplicitSolver<dim>::write_checkpoint()
   TimerOutput::Scope t(timer_, "checkpoint");
   const double t0 = MPI_Wtime();
   const std::string file = checkpoint_path(checkpoint_directory_, static_cast<int>(converged_.step));
-  const std::vector<std::vector<char>> states =
-    pool_ ? pool_->gather_committed_states(0) : std::vector<std::vector<char>>();
+  const std::vector<std::vector<char>> states = material_->gather_committed_states(0);
   std::string problem;
   if (rank_ == 0)
     try
@@ -145,12 +104,14 @@ std::string ExplicitSolver<dim>::write_checkpoint()
       d.step = static_cast<int>(converged_.step);
       d.stage = static_cast<int>(converged_.stage);
       d.step_in_stage = static_cast<int>(converged_.step_in_stage);
-      d.u_top_ic = converged_.u_top_ic;
-      d.h_ic = converged_.h_ic;
+      d.u_top_ic = converged_.reference.u_top_ic;
+      d.h_ic = converged_.reference.h_ic;
       d.wall_seconds = MPI_Wtime() - t_start_;
       d.displacement.assign(converged_.displacement.begin(), converged_.displacement.end());
-      d.ip_state = pack_ip_state();
-      d.ip_state_width = 4 * dim * dim + 5;
+      d.ip_state_width = IpState<dim>::packed_size();
+      d.ip_state.resize(d.ip_state_width * converged_.ip.size());
+      for (std::size_t p = 0; p < converged_.ip.size(); ++p)
+        converged_.ip[p].pack(&d.ip_state[p * d.ip_state_width]);
       d.summary_rows = summary_rows_;
       d.parameters = prm_.identity;
       macro::write_checkpoint(file, d, states, history_file_.get());
@@ -191,10 +152,16 @@ std::string ExplicitSolver<dim>::resume_from_checkpoint()
   stage_ = d.stage;
   step_in_stage_ = d.step_in_stage;
   step_ = d.step;
-  u_top_ic_ = d.u_top_ic;
-  h_ic_ = d.h_ic;
+  if (d.ip_state_width != IpState<dim>::packed_size() || d.ip_state.size() != d.ip_state_width * ip_.size())
+    throw std::runtime_error("--resume: checkpoint '" + file + "' holds " +
+                             std::to_string(d.ip_state_width ? d.ip_state.size() / d.ip_state_width : 0) +
+                             " quadrature points of " + std::to_string(d.ip_state_width) +
+                             " values, the mesh has " + std::to_string(ip_.size()) + " of " +
+                             std::to_string(IpState<dim>::packed_size()));
+  load_case_->set_reference({d.u_top_ic, d.h_ic});
   std::copy(d.displacement.begin(), d.displacement.end(), displacement_.begin());
-  unpack_ip_state(d.ip_state, d.ip_state_width);
+  for (std::size_t p = 0; p < ip_.size(); ++p)
+    ip_[p].unpack(&d.ip_state[p * d.ip_state_width]);
   summary_rows_ = d.summary_rows;
   t_start_ = MPI_Wtime() - d.wall_seconds;
   for (unsigned int s = 1; s <= step_; ++s)

@@ -1,6 +1,7 @@
 // The loading of fe2dem: the run over load stages and steps, sub-steps and
 // retries after RVE faults, and the boundary conditions of each step.
 #include "explicit_solver.h"
+#include "rve_pool.h" // CouplerError
 
 #include <deal.II/base/mpi.h>
 
@@ -21,18 +22,19 @@ void ExplicitSolver<dim>::run()
   setup_system();
   assemble_lumped_mass();
   prepare_output_directory();
-  h_ic_ = hi_[1] - lo_[1];
-  stage_ = steps_in_stage(1) > 0 ? 1 : 2;
+  stage_ = load_case_->steps_in_stage(1) > 0 ? 1 : 2;
   const std::string checkpoint = resume_ ? resume_from_checkpoint() : "";
-  if (prm_.material.type == "RVE")
-    make_rve_pool(checkpoint);
+  make_material(checkpoint);
+  // (M8) is capped by the stability limit 2/omega_max of the mesh, omega_max ~ 2 c sqrt(dim)/h.
+  integrator_ = std::make_unique<DynamicRelaxationIntegrator>(
+    prm_.relaxation, mass_, 2.0 * std::sqrt(double(dim)) * material_->wave_speed() / h_min_);
   open_output_files(checkpoint);
   save_converged_state();
   try
   {
     for (; stage_ <= 2; ++stage_, step_in_stage_ = 0)
     {
-      while (step_in_stage_ < steps_in_stage(stage_))
+      while (step_in_stage_ < load_case_->steps_in_stage(stage_))
       {
         ++step_in_stage_;
         ++step_;
@@ -41,10 +43,11 @@ void ExplicitSolver<dim>::run()
           TimerOutput::Scope t(timer_, "output");
           output_step(iterations);
         }
+        close_load_step();
         save_converged_state();
         // After the output: a moved RVE has no contact list until its next solve.
-        if (pool_ && prm_.parallel.rebalance)
-          pool_->rebalance();
+        if (prm_.parallel.rebalance)
+          material_->rebalance();
         if (prm_.checkpoint.every > 0 && step_ % prm_.checkpoint.every == 0)
           write_checkpoint();
       }
@@ -73,9 +76,8 @@ void ExplicitSolver<dim>::run()
 template <int dim>
 unsigned int ExplicitSolver<dim>::solve_load_step()
 {
-  dem_steps_in_step_ = rve_solves_in_step_ = unconverged_in_step_ = 0;
-  rve_seconds_in_step_ = 0.0;
-  const double n = steps_in_stage(stage_);
+  cost_in_step_ = {};
+  const double n = load_case_->steps_in_stage(stage_);
   double done = 0.0, size = 1.0;
   unsigned int iterations = 0, cuts = 0;
   bool first_attempt = true;
@@ -110,25 +112,24 @@ unsigned int ExplicitSolver<dim>::solve_load_step()
       pcout_ << e.what() << "\n  cut " << cuts
              << ": every RVE back to the start of the load step, retrying it in "
              << std::lround(1.0 / size) << " sub-steps" << std::endl;
-      pool_->rollback();
+      material_->rollback();
       displacement_ = start;
     }
   }
-  if (pool_)
-    pool_->commit();
+  material_->commit();
   return iterations;
 }
 
-// Testing only (subsection Faults): a step budget of 1 makes the solve fail
-// at its first check; the instance rebuilt by a rollback has the template's
-// budget again.
+// Testing only (subsection Faults): the material makes the IP's next solve
+// fail (an RVE gets a step budget of 1; the instance rebuilt by a rollback
+// has the template's budget again).
 template <int dim>
 void ExplicitSolver<dim>::inject_fault_if_due(bool first_attempt)
 {
   const Faults& f = prm_.faults;
-  if (!pool_ || f.inject_ip < 0 || fault_injected_ || !first_attempt || step_ != f.inject_step)
+  if (f.inject_ip < 0 || fault_injected_ || !first_attempt || step_ != f.inject_step)
     return;
-  pool_->command(f.inject_ip, "fix_modify " + prm_.rve.setup("none").fix_id + " max_steps 1");
+  material_->inject_fault(f.inject_ip);
   fault_injected_ = true;
   pcout_ << "load step " << step_ << ": injected a fault into the RVE of IP " << f.inject_ip
          << " ('Inject fault' of subsection Faults)" << std::endl;
@@ -137,108 +138,34 @@ void ExplicitSolver<dim>::inject_fault_if_due(bool first_attempt)
 template <int dim>
 unsigned int ExplicitSolver<dim>::total_steps() const
 {
-  return steps_in_stage(1) + steps_in_stage(2);
-}
-
-template <int dim>
-unsigned int ExplicitSolver<dim>::steps_in_stage(unsigned int stage) const
-{
-  if (stage == 1)
-    return prm_.loading.boundary == "biaxial" ? prm_.loading.isotropic_steps : 0;
-  return prm_.loading.steps;
+  return load_case_->steps_in_stage(1) + load_case_->steps_in_stage(2);
 }
 
 // End of stage 1: the height and J against which stage 2 is measured.
 template <int dim>
-double ExplicitSolver<dim>::mean_top_displacement() const
+void ExplicitSolver<dim>::finish_isotropic_stage()
 {
-  double sum = 0.0;
-  int n = 0;
-  for (types::global_dof_index i = 0; i < dof_position_.size(); ++i)
-    if (edges_of(dof_position_[i]).top && dof_component_[i] == 1)
-    {
-      sum += displacement_[i];
-      ++n;
-    }
-  return sum / n;
+  load_case_->finish_stage_1(displacement_);
+  for (IpState<dim>& p : ip_)
+    p.J_ic = determinant(p.F);
 }
 
 template <int dim>
-void ExplicitSolver<dim>::finish_isotropic_stage()
+void ExplicitSolver<dim>::close_load_step()
 {
-  u_top_ic_ = mean_top_displacement();
-  h_ic_ = hi_[1] - lo_[1] + u_top_ic_;
-  for (PointHistory& h : history_)
-    h.J_ic = determinant(h.F);
+  for (IpState<dim>& p : ip_)
+    p.F_last_step = p.F;
 }
 
 template <int dim>
 void ExplicitSolver<dim>::apply_boundary_values()
 {
-  const double frac = load_fraction_;
-  boundary_values_.clear();
-  Tensor<2, dim> F = unit_symmetric_tensor<dim>();
-  F += frac * (affine_F_ - unit_symmetric_tensor<dim>());
-  for (types::global_dof_index i = 0; i < dof_position_.size(); ++i)
-  {
-    const Point<dim>& X = dof_position_[i];
-    const unsigned int c = dof_component_[i];
-    const auto [left, right, bottom, top] = edges_of(X);
-    if (prm_.loading.boundary == "affine")
-    {
-      if (left || right || bottom || top)
-        boundary_values_[i] = (F * X - X)[c];
-    }
-    else
-    {
-      if (bottom && c == 1)
-        boundary_values_[i] = 0.0;
-      if (bottom && left && c == 0)
-        boundary_values_[i] = 0.0;
-      if (stage_ == 2 && top && c == 1) // displacement control from the height h_ic
-        boundary_values_[i] = u_top_ic_ - frac * prm_.loading.axial_strain * h_ic_;
-    }
-  }
+  boundary_values_ = load_case_->constraints(stage_, load_fraction_);
   for (const auto& [i, value] : boundary_values_)
   {
     displacement_[i] = value;
     velocity_[i] = 0.0;
   }
-}
-
-// Follower pressure on the left and right edges: -p n da on the current
-// edge, lumped half to each node (exact for straight Q1 edges).
-template <int dim>
-void ExplicitSolver<dim>::assemble_external_force()
-{
-  f_ext_ = 0.0;
-  const double p = (stage_ == 1 ? load_fraction_ : 1.0) * prm_.loading.pressure;
-  if (prm_.loading.boundary != "biaxial" || p == 0.0)
-    return;
-  for (const auto& cell : dof_handler_.active_cell_iterators())
-    for (const unsigned int f : cell->face_indices())
-    {
-      const auto face = cell->face(f);
-      if (!face->at_boundary())
-        continue;
-      const Edges e = edges_of(face->center());
-      const bool left = e.left, right = e.right, top = stage_ == 1 && e.top; // top loaded in stage 1
-      if (!left && !right && !top)
-        continue;
-      Point<dim> x[2];
-      for (unsigned int v = 0; v < 2; ++v)
-        for (unsigned int c = 0; c < dim; ++c)
-          x[v][c] = face->vertex(v)[c] + displacement_[face->vertex_dof_index(v, c)];
-      const Tensor<1, dim> d = x[1] - x[0];
-      Tensor<1, dim> n;
-      n[0] = d[1];
-      n[1] = -d[0];
-      if ((left && n[0] > 0.0) || (right && n[0] < 0.0) || (top && n[1] < 0.0))
-        n *= -1.0; // outward
-      for (unsigned int v = 0; v < 2; ++v)
-        for (unsigned int c = 0; c < dim; ++c)
-          f_ext_[face->vertex_dof_index(v, c)] -= 0.5 * p * n[c];
-    }
 }
 
 template class ExplicitSolver<2>;

@@ -18,32 +18,32 @@ template <int dim>
 void ExplicitSolver<dim>::output_step(unsigned int iterations)
 {
   const StepStatistics stats = gather_step_statistics();
-  const EdgeResponse edges = top_reaction_and_affine_deviation();
-  const double axial = stage_ == 2 ? (u_top_ic_ - mean_top_displacement()) / h_ic_ : 0.0;
+  const double axial = load_case_->axial_strain(stage_, displacement_);
   write_particle_dumps();
   // Load balance: RVE seconds of the busiest and of the mean rank (collective).
-  const Utilities::MPI::MinMaxAvg rve_seconds = Utilities::MPI::min_max_avg(rve_seconds_in_step_, MPI_COMM_WORLD);
+  const Utilities::MPI::MinMaxAvg rve_seconds =
+    Utilities::MPI::min_max_avg(cost_in_step_.seconds, MPI_COMM_WORLD);
   if (rank_ != 0)
     return;
   history_file_->append(static_cast<int>(step_), axial, stats.records);
-  write_summary_row(stats, iterations, axial, edges, rve_seconds);
+  write_summary_row(stats, iterations, axial, rve_seconds);
   write_vtu(stats);
 }
 
 template <int dim>
-typename ExplicitSolver<dim>::StepStatistics ExplicitSolver<dim>::gather_step_statistics()
+typename ExplicitSolver<dim>::StepStatistics ExplicitSolver<dim>::gather_step_statistics() const
 {
   const unsigned int n_cells = triangulation_.n_active_cells();
-  const unsigned int per_cell = history_.size() / n_cells;
+  const unsigned int per_cell = quadrature_.size();
   StepStatistics st;
   for (auto* v : {&st.s11, &st.s22, &st.ratio, &st.j_rel, &st.coordination, &st.anisotropy, &st.eq_strain})
     v->reinit(n_cells);
-  st.records.resize(history_.size());
+  st.records.resize(ip_.size());
   double r_min = 1e300, r_max = -1e300, r_sum = 0.0, s11_sum = 0.0, s22_sum = 0.0, j_sum = 0.0;
   double coord_sum = 0.0, aniso_sum = 0.0;
-  for (unsigned int p = 0; p < history_.size(); ++p)
+  for (unsigned int p = 0; p < ip_.size(); ++p)
   {
-    PointHistory& h = history_[p];
+    const IpState<dim>& h = ip_[p];
     const unsigned int c = p / per_cell;
     const Tensor<2, dim> F = h.F;
     const double J = determinant(F);
@@ -58,32 +58,27 @@ typename ExplicitSolver<dim>::StepStatistics ExplicitSolver<dim>::gather_step_st
     s11_sum += sigma[0][0];
     s22_sum += sigma[1][1];
     j_sum += jr;
-    coord_sum += h.coordination;
-    aniso_sum += h.anisotropy;
+    coord_sum += h.statistics.coordination;
+    aniso_sum += h.statistics.anisotropy;
     st.s11[c] += sigma[0][0] / per_cell;
     st.s22[c] += sigma[1][1] / per_cell;
     st.ratio[c] += r / per_cell;
     st.j_rel[c] += jr / per_cell;
-    st.coordination[c] += h.coordination / per_cell;
-    st.anisotropy[c] += h.anisotropy / per_cell;
+    st.coordination[c] += h.statistics.coordination / per_cell;
+    st.anisotropy[c] += h.statistics.anisotropy / per_cell;
     // incremental equivalent strain: norm of the increment of F over the step
     st.eq_strain[c] += (F - h.F_last_step).norm() / per_cell;
-    h.F_last_step = F;
-    IpRecord& rec = st.records[p];
+    IpRecord<dim>& rec = st.records[p];
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = 0; j < dim; ++j)
       {
-        rec.F[2 * i + j] = F[i][j];
-        rec.P[2 * i + j] = h.P[i][j];
-        rec.sigma[2 * i + j] = sigma[i][j];
-        rec.fabric[2 * i + j] = h.fabric[i][j];
+        rec.F[dim * i + j] = F[i][j];
+        rec.P[dim * i + j] = h.P[i][j];
+        rec.sigma[dim * i + j] = sigma[i][j];
       }
-    rec.coordination = h.coordination;
-    rec.anisotropy = h.anisotropy;
-    rec.servo_iterations = h.servo_iterations;
-    rec.dem_steps = h.dem_steps;
+    rec.statistics = h.statistics;
   }
-  const double n = history_.size();
+  const double n = ip_.size();
   st.ratio_mean = r_sum / n;
   st.ratio_min = r_min;
   st.ratio_max = r_max;
@@ -95,29 +90,10 @@ typename ExplicitSolver<dim>::StepStatistics ExplicitSolver<dim>::gather_step_st
   return st;
 }
 
-template <int dim>
-typename ExplicitSolver<dim>::EdgeResponse ExplicitSolver<dim>::top_reaction_and_affine_deviation() const
-{
-  double top_force = 0.0, dev = 0.0, scale = 0.0;
-  Tensor<2, dim> F_affine = unit_symmetric_tensor<dim>();
-  F_affine += load_fraction_ * (affine_F_ - unit_symmetric_tensor<dim>());
-  for (types::global_dof_index i = 0; i < dof_position_.size(); ++i)
-  {
-    const Point<dim>& X = dof_position_[i];
-    if (edges_of(X).top && dof_component_[i] == 1)
-      top_force += f_int_[i];
-    const double affine = (F_affine * X - X)[dof_component_[i]];
-    dev = std::max(dev, std::abs(displacement_[i] - affine));
-    scale = std::max(scale, std::abs(affine));
-  }
-  return {top_force, prm_.loading.boundary == "affine" && scale > 0.0 ? dev / scale : 0.0};
-}
-
 // Columns as in architecture.md (summary.csv); the progress line on rank 0.
 template <int dim>
 void ExplicitSolver<dim>::write_summary_row(const StepStatistics& st, unsigned int iterations,
                                             double axial,
-                                            const EdgeResponse& edges,
                                             const Utilities::MPI::MinMaxAvg& rve_seconds)
 {
   const double wall = MPI_Wtime() - t_start_;
@@ -125,16 +101,17 @@ void ExplicitSolver<dim>::write_summary_row(const StepStatistics& st, unsigned i
   row << std::setprecision(12) << step_ << ',' << stage_ << ',' << step_ - 1 + load_fraction_ << ','
       << axial << ',' << st.ratio_mean << ',' << st.ratio_min << ',' << st.ratio_max << ','
       << st.s11_mean << ',' << st.s22_mean << ',' << st.j_rel_mean << ',' << st.coordination_mean
-      << ',' << st.anisotropy_mean << ',' << iterations << ',' << dem_steps_in_step_ << ',' << wall
-      << ',' << edges.top_reaction << ',' << edges.affine_deviation << ','
-      << rve_solves_in_step_ << ',' << rve_seconds.max << ',' << rve_seconds.avg << '\n';
+      << ',' << st.anisotropy_mean << ',' << iterations << ',' << cost_in_step_.dem_steps << ',' << wall
+      << ',' << load_case_->top_reaction(f_int_) << ','
+      << load_case_->affine_deviation(load_fraction_, displacement_) << ',' << cost_in_step_.solves
+      << ',' << rve_seconds.max << ',' << rve_seconds.avg << '\n';
   summary_rows_ += row.str();
   summary_ << row.str() << std::flush;
   pcout_ << "stage " << stage_ << " step " << std::setw(3) << step_ << "  axial strain "
          << std::setw(9) << axial << "  stress ratio " << std::setw(9) << st.ratio_mean
-         << "  DR iterations " << std::setw(6) << iterations << "  DEM steps " << dem_steps_in_step_
+         << "  DR iterations " << std::setw(6) << iterations << "  DEM steps " << cost_in_step_.dem_steps
          << (prm_.material.steps_per_iteration > 0
-               ? "  unconverged RVE returns " + std::to_string(unconverged_in_step_)
+               ? "  unconverged RVE returns " + std::to_string(cost_in_step_.unconverged)
                : std::string())
          << "  wall " << std::setprecision(4) << wall << " s  ETA "
          << wall / step_ * (total_steps() - step_) << " s" << std::setprecision(6) << std::endl;
@@ -177,14 +154,14 @@ template <int dim>
 void ExplicitSolver<dim>::write_particle_dumps() const
 {
   const ParticleDumps& d = prm_.particle_dumps;
-  if (!pool_ || d.points.empty() || (step_ % d.every != 0 && step_ != total_steps()))
+  if (d.points.empty() || (step_ % d.every != 0 && step_ != total_steps()))
     return;
   for (const unsigned int p : d.points)
   {
     std::ostringstream prefix;
     prefix << prm_.output_directory << "/particles/ip" << std::setw(4) << std::setfill('0') << p
            << "-step" << std::setw(4) << step_;
-    pool_->write_particles(p, prefix.str(), step_);
+    material_->write_particles(p, prefix.str(), step_);
   }
 }
 

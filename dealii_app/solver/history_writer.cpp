@@ -3,13 +3,28 @@
 #include <hdf5.h>
 
 #include <stdexcept>
+#include <type_traits>
 
 namespace fe2dem::macro
 {
 namespace
 {
+/// Writes string attribute @p name = @p value on object @p object.
+void write_string_attribute(hid_t object, const char* name, const std::string& value)
+{
+  hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, value.size() > 0 ? value.size() : 1);
+  hid_t space = H5Screate(H5S_SCALAR);
+  hid_t attr = H5Acreate2(object, name, type, space, H5P_DEFAULT, H5P_DEFAULT);
+  H5Awrite(attr, type, value.c_str());
+  H5Aclose(attr);
+  H5Sclose(space);
+  H5Tclose(type);
+}
+
 /// Creates an extendible dataset [0][n_ip][width] (width 0: [0][n_ip]; n_ip 0: [0]).
-void create(hid_t file, const char* name, hid_t type, std::size_t n_ip, std::size_t width)
+void create(hid_t file, const char* name, hid_t type, std::size_t n_ip, std::size_t width,
+            const char* unit, const char* description)
 {
   const int rank = n_ip == 0 ? 1 : (width == 0 ? 2 : 3);
   hsize_t dims[3] = {0, n_ip, width}, max[3] = {H5S_UNLIMITED, n_ip, width};
@@ -18,6 +33,8 @@ void create(hid_t file, const char* name, hid_t type, std::size_t n_ip, std::siz
   hid_t plist = H5Pcreate(H5P_DATASET_CREATE);
   H5Pset_chunk(plist, rank, chunk);
   hid_t set = H5Dcreate2(file, name, type, space, H5P_DEFAULT, plist, H5P_DEFAULT);
+  write_string_attribute(set, "unit", unit);
+  write_string_attribute(set, "description", description);
   H5Dclose(set);
   H5Pclose(plist);
   H5Sclose(space);
@@ -45,32 +62,22 @@ void append_row(hid_t file, const char* name, hid_t type, std::size_t s, const v
 }
 } // namespace
 
-HistoryWriter::HistoryWriter(const std::string& file,
-                             const std::vector<std::array<double, 2>>& ip_position)
-  : n_ip_(ip_position.size()), name_(file)
-{
-  file_ = H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file_ < 0)
-    throw std::runtime_error("cannot create '" + file + "': check 'Output directory'");
-  const hsize_t dims[2] = {n_ip_, 2};
-  hid_t space = H5Screate_simple(2, dims, nullptr);
-  hid_t set = H5Dcreate2(file_, "ip_position", H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT,
-                         H5P_DEFAULT);
-  H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, ip_position.data());
-  H5Dclose(set);
-  H5Sclose(space);
-  create(file_, "step", H5T_NATIVE_INT, 0, 0);
-  create(file_, "axial_strain", H5T_NATIVE_DOUBLE, 0, 0);
-  for (const char* name : {"F", "P", "sigma", "fabric"})
-    create(file_, name, H5T_NATIVE_DOUBLE, n_ip_, 4);
-  for (const char* name : {"coordination", "anisotropy"})
-    create(file_, name, H5T_NATIVE_DOUBLE, n_ip_, 0);
-  for (const char* name : {"servo_iterations", "dem_steps"})
-    create(file_, name, H5T_NATIVE_LONG, n_ip_, 0);
-}
-
 namespace
 {
+/// Names of the datasets in the root group of @p file.
+std::vector<std::string> dataset_names(hid_t file)
+{
+  std::vector<std::string> names;
+  H5Literate(
+    file, H5_INDEX_NAME, H5_ITER_INC, nullptr,
+    [](hid_t, const char* name, const H5L_info_t*, void* data) -> herr_t {
+      static_cast<std::vector<std::string>*>(data)->push_back(name);
+      return 0;
+    },
+    &names);
+  return names;
+}
+
 /// Extent of the first dimension of dataset @p name.
 std::size_t rows(hid_t file, const char* name)
 {
@@ -82,9 +89,27 @@ std::size_t rows(hid_t file, const char* name)
   H5Dclose(set);
   return dims[0];
 }
+} // namespace
 
-const char* const datasets[] = {"ip_position", "step", "axial_strain", "F", "P", "sigma", "fabric",
-                                "coordination", "anisotropy", "servo_iterations", "dem_steps"};
+HistoryWriter::HistoryWriter(const std::string& file, const std::vector<double>& ip_position,
+                             unsigned int dim)
+  : n_ip_(ip_position.size() / dim), name_(file)
+{
+  file_ = H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (file_ < 0)
+    throw std::runtime_error("cannot create '" + file + "': check 'Output directory'");
+  const hsize_t dims[2] = {n_ip_, dim};
+  hid_t space = H5Screate_simple(2, dims, nullptr);
+  hid_t set = H5Dcreate2(file_, "ip_position", H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT,
+                         H5P_DEFAULT);
+  H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, ip_position.data());
+  write_string_attribute(set, "unit", "m");
+  write_string_attribute(set, "description", "reference position of each quadrature point (cell by cell)");
+  H5Dclose(set);
+  H5Sclose(space);
+  create(file_, "step", H5T_NATIVE_INT, 0, 0, "1", "load step number of each row");
+  create(file_, "axial_strain", H5T_NATIVE_DOUBLE, 0, 0, "1",
+         "compressive axial strain of the top edge from the height after stage 1 (0 in stage 1)");
 }
 
 HistoryWriter::HistoryWriter(const std::string& file, long long source) : name_(file)
@@ -92,9 +117,9 @@ HistoryWriter::HistoryWriter(const std::string& file, long long source) : name_(
   file_ = H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   if (file_ < 0)
     throw std::runtime_error("cannot create '" + file + "': check 'Output directory'");
-  for (const char* name : datasets)
-    if (H5Ocopy(source, name, file_, name, H5P_DEFAULT, H5P_DEFAULT) < 0)
-      throw std::runtime_error("cannot copy '" + std::string(name) + "' into '" + file + "'");
+  for (const std::string& name : dataset_names(source))
+    if (H5Ocopy(source, name.c_str(), file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT) < 0)
+      throw std::runtime_error("cannot copy '" + name + "' into '" + file + "'");
   n_ip_ = rows(file_, "ip_position");
   n_steps_ = rows(file_, "step");
   H5Fflush(file_, H5F_SCOPE_GLOBAL);
@@ -102,10 +127,9 @@ HistoryWriter::HistoryWriter(const std::string& file, long long source) : name_(
 
 void HistoryWriter::copy_to(long long destination) const
 {
-  for (const char* name : datasets)
-    if (H5Ocopy(file_, name, destination, name, H5P_DEFAULT, H5P_DEFAULT) < 0)
-      throw std::runtime_error("cannot copy '" + std::string(name) + "' of '" + name_ +
-                               "' into a checkpoint");
+  for (const std::string& name : dataset_names(file_))
+    if (H5Ocopy(file_, name.c_str(), destination, name.c_str(), H5P_DEFAULT, H5P_DEFAULT) < 0)
+      throw std::runtime_error("cannot copy '" + name + "' of '" + name_ + "' into a checkpoint");
 }
 
 HistoryWriter::~HistoryWriter()
@@ -114,37 +138,73 @@ HistoryWriter::~HistoryWriter()
     H5Fclose(file_);
 }
 
-void HistoryWriter::append(int step, double axial_strain, const std::vector<IpRecord>& ips)
+void HistoryWriter::create_once(const char* name, long long type, std::size_t width, const char* unit,
+                                const char* description)
 {
+  if (H5Lexists(file_, name, H5P_DEFAULT) <= 0)
+    create(file_, name, type, n_ip_, width, unit, description);
+}
+
+template <int dim>
+void HistoryWriter::append(int step, double axial_strain, const std::vector<IpRecord<dim>>& ips)
+{
+  constexpr std::size_t n = dim * dim;
   append_row(file_, "step", H5T_NATIVE_INT, n_steps_, &step);
   append_row(file_, "axial_strain", H5T_NATIVE_DOUBLE, n_steps_, &axial_strain);
-  std::vector<double> t(4 * n_ip_), d(n_ip_);
+  std::vector<double> t(n * n_ip_), d(n_ip_);
   std::vector<long> l(n_ip_);
-  auto tensor = [&](const char* name, std::array<double, 4> IpRecord::*member) {
+  auto tensor = [&](const char* name, const char* unit, const char* description, auto value_of) {
+    create_once(name, H5T_NATIVE_DOUBLE, n, unit, description);
     for (std::size_t p = 0; p < n_ip_; ++p)
-      for (int k = 0; k < 4; ++k)
-        t[4 * p + k] = (ips[p].*member)[k];
+      for (std::size_t k = 0; k < n; ++k)
+        t[n * p + k] = value_of(ips[p])[k];
     append_row(file_, name, H5T_NATIVE_DOUBLE, n_steps_, t.data());
   };
-  tensor("F", &IpRecord::F);
-  tensor("P", &IpRecord::P);
-  tensor("sigma", &IpRecord::sigma);
-  tensor("fabric", &IpRecord::fabric);
-  auto scalar = [&](const char* name, double IpRecord::*member) {
-    for (std::size_t p = 0; p < n_ip_; ++p)
-      d[p] = ips[p].*member;
-    append_row(file_, name, H5T_NATIVE_DOUBLE, n_steps_, d.data());
-  };
-  scalar("coordination", &IpRecord::coordination);
-  scalar("anisotropy", &IpRecord::anisotropy);
-  auto integer = [&](const char* name, long IpRecord::*member) {
-    for (std::size_t p = 0; p < n_ip_; ++p)
-      l[p] = ips[p].*member;
-    append_row(file_, name, H5T_NATIVE_LONG, n_steps_, l.data());
-  };
-  integer("servo_iterations", &IpRecord::servo_iterations);
-  integer("dem_steps", &IpRecord::dem_steps);
+  tensor("F", "1", "deformation gradient dx/dX, row-major 11 12 21 22",
+         [](const IpRecord<dim>& r) { return r.F; });
+  tensor("P", "N/m", "first Piola-Kirchhoff stress, row-major, tension positive",
+         [](const IpRecord<dim>& r) { return r.P; });
+  tensor("sigma", "N/m", "Cauchy stress P F^T / det F, row-major, tension positive",
+         [](const IpRecord<dim>& r) { return r.sigma; });
+  // One dataset per statistic, in the order of rve_statistics.h, read from
+  // each IP's packed statistics (counts are exact in doubles).
+  constexpr std::size_t width = RveStatistics<dim>::packed_size();
+  std::vector<double> packed(width * n_ip_);
+  for (std::size_t p = 0; p < n_ip_; ++p)
+    ips[p].statistics.pack(&packed[width * p]);
+  std::size_t offset = 0;
+  RveStatistics<dim>().for_each([&](const char* name, const char* unit, const char* description,
+                                    const auto& kind) {
+    using T = std::decay_t<decltype(kind)>;
+    if constexpr (std::is_same_v<T, double>)
+    {
+      create_once(name, H5T_NATIVE_DOUBLE, 0, unit, description);
+      for (std::size_t p = 0; p < n_ip_; ++p)
+        d[p] = packed[width * p + offset];
+      append_row(file_, name, H5T_NATIVE_DOUBLE, n_steps_, d.data());
+      offset += 1;
+    }
+    else if constexpr (std::is_same_v<T, long>)
+    {
+      create_once(name, H5T_NATIVE_LONG, 0, unit, description);
+      for (std::size_t p = 0; p < n_ip_; ++p)
+        l[p] = static_cast<long>(packed[width * p + offset]);
+      append_row(file_, name, H5T_NATIVE_LONG, n_steps_, l.data());
+      offset += 1;
+    }
+    else
+    {
+      create_once(name, H5T_NATIVE_DOUBLE, n, unit, description);
+      for (std::size_t p = 0; p < n_ip_; ++p)
+        for (std::size_t k = 0; k < n; ++k)
+          t[n * p + k] = packed[width * p + offset + k];
+      append_row(file_, name, H5T_NATIVE_DOUBLE, n_steps_, t.data());
+      offset += n;
+    }
+  });
   ++n_steps_;
   H5Fflush(file_, H5F_SCOPE_GLOBAL);
 }
+
+template void HistoryWriter::append(int, double, const std::vector<IpRecord<2>>&);
 } // namespace fe2dem::macro

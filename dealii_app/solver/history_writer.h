@@ -1,15 +1,20 @@
 /**
  * @file history_writer.h
  * history.h5: per quadrature point and converged load step, the macro
- * quantities and micro statistics (architecture.md contract). Written by
- * one rank with the Open MPI build of HDF5 (the one deal.II links).
+ * quantities and every statistic of coupler/rve_statistics.h
+ * (architecture.md contract). Written by one rank with the Open MPI build
+ * of HDF5 (the one deal.II links).
  *
- * Layout: /ip_position [n_ip][2]; per step s (first index, extendible):
- * /step [s], /axial_strain [s], /F, /P, /sigma, /fabric [s][n_ip][4]
- * (row-major 11 12 21 22), /coordination, /anisotropy, /servo_iterations,
- * /dem_steps [s][n_ip].
+ * Layout: /ip_position [n_ip][dim]; per step s (first index, extendible):
+ * /step [s], /axial_strain [s], /F, /P, /sigma [s][n_ip][dim*dim]
+ * (row-major 11 12 21 22; sigma is the macro Cauchy stress P F^T / J),
+ * then one dataset per statistic under its name: tensors
+ * [s][n_ip][dim*dim], scalars [s][n_ip] (double), counts [s][n_ip] (long).
+ * Every dataset has the string attributes `unit` and `description`.
  */
 #pragma once
+
+#include "rve_statistics.h"
 
 #include <array>
 #include <string>
@@ -17,18 +22,22 @@
 
 namespace fe2dem::macro
 {
+/// One IP's row of a load step.
+template <int dim>
 struct IpRecord
 {
-  std::array<double, 4> F{}, P{}, sigma{}, fabric{};
-  double coordination = 0, anisotropy = 0;
-  long servo_iterations = 0, dem_steps = 0;
+  std::array<double, dim * dim> F{}, P{}, sigma{};
+  RveStatistics<dim> statistics;
 };
 
 class HistoryWriter
 {
 public:
-  /// Creates (truncates) @p file. @throws std::runtime_error naming the file.
-  HistoryWriter(const std::string& file, const std::vector<std::array<double, 2>>& ip_position);
+  /**
+   * Creates (truncates) @p file with /ip_position (@p dim values per IP).
+   * @throws std::runtime_error naming the file.
+   */
+  HistoryWriter(const std::string& file, const std::vector<double>& ip_position, unsigned int dim);
   /**
    * Creates (truncates) @p file as a copy of the datasets in HDF5 group
    * @p source (written by copy_to(), e.g. in a checkpoint), to append to.
@@ -39,11 +48,15 @@ public:
   HistoryWriter& operator=(const HistoryWriter&) = delete;
 
   /// Appends one converged load step; flushed to disk before returning.
-  void append(int step, double axial_strain, const std::vector<IpRecord>& ips);
+  template <int dim>
+  void append(int step, double axial_strain, const std::vector<IpRecord<dim>>& ips);
   /// Copies every dataset, as written so far, into HDF5 group @p destination.
   void copy_to(long long destination) const;
 
 private:
+  /// Creates extendible dataset @p name unless it exists (the first append creates them).
+  void create_once(const char* name, long long type, std::size_t width, const char* unit,
+                   const char* description);
   long long file_ = -1;
   std::size_t n_ip_ = 0, n_steps_ = 0;
   std::string name_;

@@ -44,7 +44,7 @@ void Geometry::parse_parameters(dealii::ParameterHandler& prm, const std::string
   if (!mesh_file.empty())
   {
     const std::string given = mesh_file;
-    mesh_file = rve_driver::resolve_path(base, mesh_file);
+    mesh_file = resolve_path(base, mesh_file);
     const std::string ext = std::filesystem::path(mesh_file).extension().string();
     if (ext != ".msh" && ext != ".inp" && ext != ".ucd")
       throw std::runtime_error("subsection Geometry: 'Mesh file' = '" + given +
@@ -58,7 +58,7 @@ void Geometry::parse_parameters(dealii::ParameterHandler& prm, const std::string
     throw std::runtime_error("subsection Geometry: 'Width' and 'Height' must be > 0");
 }
 
-void Material::declare_parameters(dealii::ParameterHandler& prm)
+void MaterialParameters::declare_parameters(dealii::ParameterHandler& prm)
 {
   prm.enter_subsection("Material");
   prm.declare_entry("Type", "neo-Hookean", Selection("neo-Hookean|RVE"),
@@ -95,25 +95,25 @@ void Material::declare_parameters(dealii::ParameterHandler& prm)
   prm.leave_subsection();
 }
 
-void Material::parse_parameters(dealii::ParameterHandler& prm)
+void MaterialParameters::parse_parameters(dealii::ParameterHandler& prm)
 {
   prm.enter_subsection("Material");
-  type = prm.get("Type");
+  type = prm.get("Type") == "RVE" ? Type::rve : Type::neo_hookean;
   shear_modulus = prm.get_double("Shear modulus");
   lame_lambda = prm.get_double("Lame lambda");
   density = prm.get_double("Density");
   stability_modulus = prm.get_double("Stability modulus");
-  history = prm.get("History");
+  history = prm.get("History") == "committed" ? HistoryMode::committed : HistoryMode::continuous;
   skip_tolerance = prm.get_double("Skip tolerance");
   steps_per_iteration = prm.get_integer("DEM steps per iteration");
   prm.leave_subsection();
-  if (steps_per_iteration > 0 && history != "continuous")
+  if (steps_per_iteration > 0 && history != HistoryMode::continuous)
     throw std::runtime_error("subsection Material: 'DEM steps per iteration' = " +
                              std::to_string(steps_per_iteration) + " needs 'History' = continuous "
                              "(with committed history every solve restarts from the last load "
                              "step, so bounded solves would never progress); set it to 0 or use "
                              "continuous history");
-  rve_driver::require_positive("Material", {{"Shear modulus", shear_modulus}, {"Density", density},
+  require_positive("Material", {{"Shear modulus", shear_modulus}, {"Density", density},
                                             {"Stability modulus", stability_modulus}});
 }
 
@@ -139,7 +139,7 @@ void DynamicRelaxation::parse_parameters(dealii::ParameterHandler& prm)
   max_iterations = prm.get_integer("Max iterations");
   min_iterations = prm.get_integer("Min iterations");
   prm.leave_subsection();
-  rve_driver::require_positive("Dynamic relaxation", {{"Safety factor", safety_factor},
+  require_positive("Dynamic relaxation", {{"Safety factor", safety_factor},
                                                       {"Kinetic energy tolerance", kinetic_tolerance}});
 }
 
@@ -166,19 +166,20 @@ void Loading::declare_parameters(dealii::ParameterHandler& prm)
 void Loading::parse_parameters(dealii::ParameterHandler& prm)
 {
   prm.enter_subsection("Loading");
-  boundary = prm.get("Boundary");
+  boundary = prm.get("Boundary") == "biaxial" ? Boundary::biaxial : Boundary::affine;
   pressure = prm.get_double("Pressure");
   isotropic_steps = prm.get_integer("Isotropic steps");
   axial_strain = prm.get_double("Axial strain");
-  affine_F = prm.get("Affine F");
+  const std::string affine_text = prm.get("Affine F");
   steps = prm.get_integer("Load steps");
   prm.leave_subsection();
-  std::istringstream s(affine_F);
+  std::istringstream s(affine_text);
   double f[4];
   std::string extra;
   if (!(s >> f[0] >> f[1] >> f[2] >> f[3]) || (s >> extra) || !(f[0] * f[3] - f[1] * f[2] > 0.0))
-    throw std::runtime_error("subsection Loading: 'Affine F' = '" + affine_F +
+    throw std::runtime_error("subsection Loading: 'Affine F' = '" + affine_text +
                              "' must be four numbers F11 F12 F21 F22 with det F > 0");
+  affine_F = {{f[0], f[1], f[2], f[3]}};
 }
 
 void ParticleDumps::declare_parameters(dealii::ParameterHandler& prm)
@@ -311,14 +312,14 @@ void Parameters::declare_parameters(dealii::ParameterHandler& prm)
   prm.declare_entry("Output directory", "output", Anything(),
                     "Directory for summary.csv and solution-*.vtu (relative to the parameter file).");
   Geometry::declare_parameters(prm);
-  Material::declare_parameters(prm);
+  MaterialParameters::declare_parameters(prm);
   DynamicRelaxation::declare_parameters(prm);
   Loading::declare_parameters(prm);
   ParticleDumps::declare_parameters(prm);
   Checkpointing::declare_parameters(prm);
   Parallel::declare_parameters(prm);
   Faults::declare_parameters(prm);
-  rve_driver::RveParameters::declare_parameters(prm);
+  RveParameters::declare_parameters(prm);
 }
 
 void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
@@ -338,7 +339,7 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
   identity = result_defining_entries(prm);
   this->file = file;
   rve.parse_parameters(prm, base.string());
-  if (material.type == "RVE")
+  if (material.type == MaterialParameters::Type::rve)
     rve.check_files(file);
 }
 } // namespace fe2dem::macro

@@ -10,6 +10,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -28,12 +29,16 @@ struct Geometry
 };
 
 /// subsection Material: the built-in compressible neo-Hookean law.
-struct Material
+struct MaterialParameters
 {
-  std::string type; ///< neo-Hookean | RVE
+  enum class Type
+  {
+    neo_hookean,
+    rve
+  } type;
   double shear_modulus, lame_lambda, density;
   double stability_modulus; ///< RVE: upper estimate of the tangent modulus (stable step)
-  std::string history;      ///< RVE: committed | continuous
+  HistoryMode history;      ///< RVE: where trial solves start
   double skip_tolerance;    ///< RVE: reuse the last response if |F - F_last| below it (0: off)
   long steps_per_iteration; ///< RVE: DEM steps per DR iteration before convergence (0: relax fully)
   static void declare_parameters(dealii::ParameterHandler& prm);
@@ -52,11 +57,15 @@ struct DynamicRelaxation
 /// subsection Loading: boundary conditions and load steps.
 struct Loading
 {
-  std::string boundary;       ///< biaxial | affine
+  enum class Boundary
+  {
+    biaxial,
+    affine
+  } boundary;                 ///< the load case (load_case.h)
   double pressure;            ///< biaxial: confining follower pressure [force/length]
   unsigned int isotropic_steps; ///< biaxial stage 1: pressure on left, right and top
   double axial_strain;        ///< biaxial stage 2: compressive strain of h_ic
-  std::string affine_F;       ///< affine: "F11 F12 F21 F22" on all boundary nodes
+  std::array<double, 4> affine_F; ///< affine: F row-major {F11, F12, F21, F22} at the last step
   unsigned int steps;         ///< biaxial stage 2 / affine: load steps
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm);
@@ -103,7 +112,7 @@ struct Parameters
 {
   std::string output_directory;
   Geometry geometry;
-  Material material;
+  MaterialParameters material;
   DynamicRelaxation relaxation;
   Loading loading;
   ParticleDumps particle_dumps;
@@ -115,7 +124,7 @@ struct Parameters
   /// subsections Checkpoint, Faults, Parallel and Particle dumps.
   std::string identity;
   std::string file; ///< the parameter file
-  rve_driver::RveParameters rve; ///< subsection RVE (Material type = RVE)
+  RveParameters rve; ///< subsection RVE (Material type = RVE)
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse(dealii::ParameterHandler& prm, const std::string& file);
 };

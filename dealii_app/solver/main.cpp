@@ -1,6 +1,7 @@
 // fe2dem FILE.prm: the macro problem of a parameter file.
 #include "explicit_solver.h"
 #include "macro_parameters.h"
+#include "rve_pool.h" // CouplerError
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>

@@ -6,6 +6,8 @@
  */
 #pragma once
 
+#include "material.h"
+
 #include <deal.II/base/tensor.h>
 
 #include <cmath>
@@ -13,17 +15,29 @@
 namespace fe2dem::macro
 {
 template <int dim>
-struct NeoHookean
+class NeoHookeanMaterial : public Material<dim>
 {
-  double mu, lambda;
-
+public:
+  NeoHookeanMaterial(double mu, double lambda, double density)
+    : mu_(mu), lambda_(lambda), density_(density)
+  {
+  }
   /// First Piola-Kirchhoff stress. @pre det F > 0.
   dealii::Tensor<2, dim> piola(const dealii::Tensor<2, dim>& F) const
   {
     const dealii::Tensor<2, dim> F_inv_T = transpose(invert(F));
-    return mu * (F - F_inv_T) + lambda * std::log(determinant(F)) * F_inv_T;
+    return mu_ * (F - F_inv_T) + lambda_ * std::log(determinant(F)) * F_inv_T;
   }
-  /// P-wave speed at the reference state, for the stable time step.
-  double wave_speed(double density) const { return std::sqrt((lambda + 2.0 * mu) / density); }
+  EvaluationCost evaluate(std::vector<IpState<dim>>& points) override
+  {
+    for (IpState<dim>& p : points)
+      p.P = piola(p.F);
+    return {};
+  }
+  /// P-wave speed at the reference state.
+  double wave_speed() const override { return std::sqrt((lambda_ + 2.0 * mu_) / density_); }
+
+private:
+  double mu_, lambda_, density_;
 };
 } // namespace fe2dem::macro

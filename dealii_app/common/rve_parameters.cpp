@@ -4,15 +4,12 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace fe2dem::rve_driver
+namespace fe2dem
 {
 using dealii::Patterns::Anything;
 using dealii::Patterns::Double;
 using dealii::Patterns::Integer;
 using dealii::Patterns::Selection;
-
-namespace
-{
 
 void require_file(const std::string& file, const std::string& entry, const std::string& prm)
 {
@@ -22,6 +19,8 @@ void require_file(const std::string& file, const std::string& entry, const std::
                              "parameter file or an absolute one");
 }
 
+namespace
+{
 std::string number(double v)
 {
   std::ostringstream s;
@@ -169,80 +168,4 @@ RveSetup RveParameters::setup(const std::string& log_file) const
                  {"max_overlap", number(max_overlap)}});
   return s;
 }
-
-void PathParameters::declare_parameters(dealii::ParameterHandler& prm)
-{
-  prm.enter_subsection("Path");
-  prm.declare_entry("Type", "biaxial", Selection("isotropic|biaxial|simple shear|table"),
-                    "isotropic: compression to 'Pressure'; biaxial: isotropic stage, then axial "
-                    "compression (F22) at constant lateral stress sigma11 = -Pressure; simple "
-                    "shear: isotropic stage, then F12 = gamma; table: F from 'Table file'.");
-  prm.declare_entry("Pressure", "1.5e5", Double(0.0),
-                    "Confining pressure [N/m in 2D], compressive, >= 0.");
-  prm.declare_entry("Isotropic steps", "5", Integer(0),
-                    "Load steps of the isotropic stage (stress controlled).");
-  prm.declare_entry("Loading steps", "20", Integer(1),
-                    "Load steps of the biaxial or shear stage.");
-  prm.declare_entry("Axial strain", "0.05", Double(0.0, 0.5),
-                    "biaxial: final axial compressive strain, F22 = (1 - strain) F22_iso.");
-  prm.declare_entry("Shear strain", "0.05", Double(-1.0, 1.0), "simple shear: final F12.");
-  prm.declare_entry("Table file", "", Anything(),
-                    "table: whitespace-separated rows 'F11 F12 F21 F22', one load step each; "
-                    "'#' starts a comment.");
-  prm.declare_entry("Stress tolerance", "1e-2", Double(0.0),
-                    "Relative tolerance of stress-controlled components.");
-  prm.declare_entry("Free shear", "false", dealii::Patterns::Bool(),
-                    "isotropic and biaxial: also hold sigma12 = 0 through F12 (and, in the "
-                    "isotropic stage, sigma11 = sigma22 = -p through F11, F22), i.e. the stress "
-                    "state of a macro element whose edges are free in shear.");
-  prm.declare_entry("Isotropic control", "mean stress", dealii::Patterns::Selection("mean stress|each component"),
-                    "isotropic stage without 'Free shear': 'mean stress' holds (sigma11 + sigma22)/2 = -p "
-                    "with F11 = F22; 'each component' holds sigma11 = sigma22 = -p through F11 and F22 "
-                    "with F12 = F21 = 0, as a periodic cell under stress control (benchmarks/frame_vs_periodic).");
-  prm.declare_entry("Max stress iterations", "15", Integer(1),
-                    "Secant iterations on F per stress-controlled load step.");
-  prm.leave_subsection();
-}
-
-void PathParameters::parse_parameters(dealii::ParameterHandler& prm, const std::string& base_dir)
-{
-  prm.enter_subsection("Path");
-  type = prm.get("Type");
-  pressure = prm.get_double("Pressure");
-  isotropic_steps = prm.get_integer("Isotropic steps");
-  loading_steps = prm.get_integer("Loading steps");
-  axial_strain = prm.get_double("Axial strain");
-  shear_strain = prm.get_double("Shear strain");
-  table_file = resolve_path(base_dir, prm.get("Table file"));
-  stress_tolerance = prm.get_double("Stress tolerance");
-  max_stress_iterations = prm.get_integer("Max stress iterations");
-  free_shear = prm.get_bool("Free shear");
-  isotropic_components = prm.get("Isotropic control") == "each component";
-  prm.leave_subsection();
-  if (type == "isotropic" && (pressure <= 0.0 || isotropic_steps == 0))
-    throw std::runtime_error("subsection Path: Type = isotropic needs 'Pressure' > 0 and "
-                             "'Isotropic steps' > 0");
-  if (stress_tolerance <= 0.0)
-    throw std::runtime_error("subsection Path: 'Stress tolerance' must be > 0");
-}
-
-void Parameters::declare_parameters(dealii::ParameterHandler& prm)
-{
-  prm.declare_entry("Output directory", "output", Anything(),
-                    "Directory for rve.csv (created; relative to the parameter file).");
-  RveParameters::declare_parameters(prm);
-  PathParameters::declare_parameters(prm);
-}
-
-void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
-{
-  const std::string base = std::filesystem::path(file).parent_path().string();
-  prm.parse_input(file); // throws deal.II's message naming the line on unknown entries
-  output_directory = resolve_path(base, prm.get("Output directory"));
-  rve.parse_parameters(prm, base);
-  path.parse_parameters(prm, base);
-  rve.check_files(file);
-  if (path.type == "table")
-    require_file(path.table_file, "subsection Path: Table file", file);
-}
-} // namespace fe2dem::rve_driver
+} // namespace fe2dem

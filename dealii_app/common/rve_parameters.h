@@ -1,12 +1,14 @@
 /**
  * @file rve_parameters.h
- * Parameters of `fe2dem-rve FILE.prm`, one struct per subsection in the
- * deal.II style: declare_parameters() documents every entry with a pattern,
- * parse_parameters() reads and validates it.
+ * Subsection RVE of `fe2dem` and `fe2dem-rve` parameter files (the packing,
+ * the contact law, the servo settings) in the deal.II style:
+ * declare_parameters() documents every entry with a pattern,
+ * parse_parameters() reads and validates it, setup() gives the RVE set-up.
+ * Also the helpers both programs' parameters use.
  */
 #pragma once
 
-#include "servo_rve.h"
+#include "rve_setup.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -14,10 +16,13 @@
 #include <string>
 #include <utility>
 
-namespace fe2dem::rve_driver
+namespace fe2dem
 {
 /// @p path relative to @p base_dir (a parameter file's directory), unless empty or absolute.
 std::string resolve_path(const std::string& base_dir, const std::string& path);
+
+/// @throws std::runtime_error naming @p prm, @p entry and @p file if @p file is not a regular file.
+void require_file(const std::string& file, const std::string& entry, const std::string& prm);
 
 /// @throws std::runtime_error "subsection S: 'NAME' = V must be > 0" for the first value that is not > 0.
 void require_positive(const std::string& subsection,
@@ -44,32 +49,4 @@ struct RveParameters
   /// @throws std::runtime_error naming @p prm_file and the entry if Template or Packing files are missing.
   void check_files(const std::string& prm_file) const;
 };
-
-/// subsection Path: the macro path the RVE follows.
-struct PathParameters
-{
-  std::string type;          ///< isotropic | biaxial | simple shear | table
-  double pressure;           ///< confining pressure [N/m], > 0 compressive
-  unsigned int isotropic_steps, loading_steps;
-  double axial_strain, shear_strain;
-  std::string table_file;
-  double stress_tolerance;
-  bool free_shear;           ///< also hold sigma12 = 0 through F12 (as the macro biaxial test)
-  bool isotropic_components; ///< isotropic stage: sigma11 = sigma22 = -p through F11, F22 (F12 = 0)
-  unsigned int max_stress_iterations;
-
-  static void declare_parameters(dealii::ParameterHandler& prm);
-  void parse_parameters(dealii::ParameterHandler& prm, const std::string& base_dir);
-};
-
-struct Parameters
-{
-  std::string output_directory;
-  RveParameters rve;
-  PathParameters path;
-
-  static void declare_parameters(dealii::ParameterHandler& prm);
-  /// Reads @p file; throws with the file name on unknown or invalid entries.
-  void parse(dealii::ParameterHandler& prm, const std::string& file);
-};
-} // namespace fe2dem::rve_driver
+} // namespace fe2dem

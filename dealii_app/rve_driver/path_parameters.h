@@ -1,0 +1,43 @@
+/**
+ * @file path_parameters.h
+ * Parameters of `fe2dem-rve FILE.prm`: subsection RVE (rve_parameters.h,
+ * shared with fe2dem) and subsection Path, the macro path the RVE follows.
+ */
+#pragma once
+
+#include "rve_parameters.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace fe2dem::rve_driver
+{
+/// subsection Path: the macro path the RVE follows.
+struct PathParameters
+{
+  std::string type;          ///< isotropic | biaxial | simple shear | table
+  double pressure;           ///< confining pressure [N/m], > 0 compressive
+  unsigned int isotropic_steps, loading_steps;
+  double axial_strain, shear_strain;
+  std::string table_file;
+  double stress_tolerance;
+  bool free_shear;           ///< also hold sigma12 = 0 through F12 (as the macro biaxial test)
+  bool isotropic_components; ///< isotropic stage: sigma11 = sigma22 = -p through F11, F22 (F12 = 0)
+  unsigned int max_stress_iterations;
+
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm, const std::string& base_dir);
+};
+
+struct Parameters
+{
+  std::string output_directory;
+  RveParameters rve;
+  PathParameters path;
+
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  /// Reads @p file; throws with the file name on unknown or invalid entries.
+  void parse(dealii::ParameterHandler& prm, const std::string& file);
+};
+} // namespace fe2dem::rve_driver

@@ -1,0 +1,57 @@
+/**
+ * @file material.h
+ * The constitutive response of the macro solver at its quadrature points:
+ * an analytic law (NeoHookeanMaterial) or one RVE per point (RveMaterial).
+ * The solver sees only this interface; what only RVEs have (history,
+ * cost, checkpoints of their state, particle pictures) has defaults here
+ * that an analytic law does not override.
+ */
+#pragma once
+
+#include "ip_state.h"
+
+#include <string>
+#include <vector>
+
+namespace fe2dem::macro
+{
+/// Work of one evaluate() on this rank (zero for analytic laws).
+struct EvaluationCost
+{
+  long dem_steps = 0;   ///< over all IPs
+  long solves = 0;      ///< RVE solves (skipped ones not counted)
+  long unconverged = 0; ///< bounded solves that stopped at their step limit
+  double seconds = 0.0; ///< this rank's wall seconds in RVE solves
+};
+
+template <int dim>
+class Material
+{
+public:
+  virtual ~Material() = default;
+  /**
+   * P (and the statistics) of every point from its F.
+   * @pre det F > 0 at every point. @throws CouplerError if an RVE fails.
+   */
+  virtual EvaluationCost evaluate(std::vector<IpState<dim>>& points) = 0;
+  /// Upper estimate of the P-wave speed, for the stable time step.
+  virtual double wave_speed() const = 0;
+
+  /// Whether set_step_limit() bounds evaluations (multiple time stepping).
+  virtual bool has_step_limit() const { return false; }
+  /// Later evaluations run at most @p steps DEM steps per RVE (0: to convergence).
+  virtual void set_step_limit(long /*steps*/) {}
+  /// The last evaluation is the converged load step.
+  virtual void commit() {}
+  /// Back to the state of the last commit() (a load-step cut).
+  virtual void rollback() {}
+  /// After commit(): re-places work over the ranks (never changes results).
+  virtual void rebalance() {}
+  /// Committed state of every point, on rank @p root (empty if stateless). Collective.
+  virtual std::vector<std::vector<char>> gather_committed_states(int /*root*/) const { return {}; }
+  /// Testing: the next evaluation fails at point @p ip (subsection Faults).
+  virtual void inject_fault(unsigned int /*ip*/) {}
+  /// Particle pictures of point @p ip under @p prefix (no-op without particles).
+  virtual void write_particles(unsigned int /*ip*/, const std::string& /*prefix*/, long /*step*/) const {}
+};
+} // namespace fe2dem::macro

@@ -29,7 +29,8 @@
     r.contacts.mechanical_coordination)                                                               \
   X(scalar, packing_fraction, "1", "solid area fraction of the periodic cell", r.packing_fraction)   \
   X(scalar, residual, "1", "servo residual r_a (R14) at the end of the solve", r.residual)           \
-  X(scalar, ekin_epot, "1", "E_kin/E_pot of the inner particles (R12) at the end of the solve", r.ekin_epot)
+  X(scalar, ekin_epot, "1", "E_kin/E_pot of the inner particles (R12) at the end of the solve", r.ekin_epot) \
+  X(scalar, mean_overlap, "1", "mean contact overlap / smaller radius", r.contacts.mean_overlap)
 // clang-format on
 
 namespace fe2dem

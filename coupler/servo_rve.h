@@ -107,7 +107,7 @@ private:
   std::string committed_file_;
   std::size_t committed_bytes_ = 0;
   bool at_committed_state_ = false;
-  Mat2 committed_F_{1, 0, 0, 1}; ///< F of the committed state
+  Mat2 committed_F_{{1, 0, 0, 1}}; ///< F of the committed state
   std::unique_ptr<LiggghtsInstance> instance_;
   LAMMPS_NS::FixRveServo* fix_ = nullptr;
   double last_seconds_ = 0.0;

@@ -34,7 +34,7 @@ constexpr int max_groups = 32; // MAX_GROUP of LIGGGHTS' group.cpp (not in a hea
 FixRveServo::FixRveServo(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg)
 {
   vector_flag = 1;
-  size_vector = 39;
+  size_vector = out_size;
   global_freq = 1;
   extvector = 0;
   time_integrate = 1;
@@ -489,28 +489,33 @@ const char* FixRveServo::status_name(Status s)
 double FixRveServo::compute_vector(int n)
 {
   const Result& r = result_;
-  auto tensor = [&](const Mat2& A, int k) { return A[k]; };
-  if (n == 0) return status_;
-  if (n == 1) return r.servo_iterations;
-  if (n == 2) return static_cast<double>(r.dem_steps);
-  if (n == 3) return r.residual;
-  if (n == 4) return r.ekin_epot;
-  if (n == 5) return r.unbalanced;
-  if (n < 10) return tensor(r.P, n - 6);
-  if (n < 14) return tensor(r.sigma, n - 10);
-  if (n < 18) return tensor(r.sigma_lw, n - 14);
-  if (n < 22) return tensor(r.F_check, n - 18);
-  if (n == 22) return r.contacts.coordination;
-  if (n == 23) return r.contacts.mechanical_coordination;
-  if (n == 24) return r.contacts.anisotropy;
-  if (n == 25) return r.packing_fraction;
-  if (n == 26) return r.contacts.n_sliding;
-  if (n == 27) return r.contacts.max_overlap;
-  if (n == 28) return r.contacts.n_contacts;
-  if (n == 29) return r.max_inner_omega;
-  if (n < 34) return tensor(r.contacts.fabric, n - 30);
-  if (n < 38) return tensor(r.F, n - 34);
-  return static_cast<double>(r.membrane_steps);
+  // Tensor T starting at entry first: its component n - first, if n is one of its four.
+  auto in = [n](int first) { return n >= first && n < first + 4; };
+  if (in(out_P)) return r.P[n - out_P];
+  if (in(out_sigma)) return r.sigma[n - out_sigma];
+  if (in(out_sigma_lw)) return r.sigma_lw[n - out_sigma_lw];
+  if (in(out_F_check)) return r.F_check[n - out_F_check];
+  if (in(out_fabric)) return r.contacts.fabric[n - out_fabric];
+  if (in(out_F)) return r.F[n - out_F];
+  switch (n)
+  {
+    case out_status: return status_;
+    case out_servo_iterations: return r.servo_iterations;
+    case out_dem_steps: return static_cast<double>(r.dem_steps);
+    case out_residual: return r.residual;
+    case out_ekin_epot: return r.ekin_epot;
+    case out_unbalanced: return r.unbalanced;
+    case out_coordination: return r.contacts.coordination;
+    case out_mechanical_coordination: return r.contacts.mechanical_coordination;
+    case out_anisotropy: return r.contacts.anisotropy;
+    case out_packing_fraction: return r.packing_fraction;
+    case out_sliding_contacts: return r.contacts.n_sliding;
+    case out_max_overlap: return r.contacts.max_overlap;
+    case out_contacts: return r.contacts.n_contacts;
+    case out_max_inner_omega: return r.max_inner_omega;
+    case out_membrane_steps: return static_cast<double>(r.membrane_steps);
+    default: return 0.0; // LIGGGHTS checks the index against size_vector
+  }
 }
 
 double FixRveServo::memory_usage()

@@ -101,10 +101,40 @@ public:
     overlapped = 5       ///< a contact overlaps beyond max_overlap
   };
 
+  /**
+   * The global vector f_ID[k + 1] = compute_vector(k), by name (README table).
+   * Tensors take four consecutive entries, row-major {11, 12, 21, 22}.
+   */
+  enum Output : int
+  {
+    out_status = 0,
+    out_servo_iterations = 1,
+    out_dem_steps = 2,
+    out_residual = 3,
+    out_ekin_epot = 4,
+    out_unbalanced = 5,
+    out_P = 6,
+    out_sigma = 10,
+    out_sigma_lw = 14,
+    out_F_check = 18,
+    out_coordination = 22,
+    out_mechanical_coordination = 23,
+    out_anisotropy = 24,
+    out_packing_fraction = 25,
+    out_sliding_contacts = 26,
+    out_max_overlap = 27,
+    out_contacts = 28,
+    out_max_inner_omega = 29,
+    out_fabric = 30,
+    out_F = 34,
+    out_membrane_steps = 38,
+    out_size = 39 ///< length of the vector
+  };
+
   /// Everything a solve returns; updated at every convergence check.
   struct Result
   {
-    fe2dem::Mat2 F{1, 0, 0, 1}, F_check{1, 0, 0, 1};
+    fe2dem::Mat2 F{{1, 0, 0, 1}}, F_check{{1, 0, 0, 1}};
     fe2dem::Mat2 P{}, sigma{}, sigma_lw{};
     double residual = 0.0;        ///< r_a (R14)
     double ekin_epot = 0.0;       ///< (R12) over inner particles
@@ -290,9 +320,9 @@ private:
   /// Adaptive gain state of one edge pair (or of the corners).
   struct ServoMemory
   {
-    fe2dem::Vec2 force_factor{1.0, 1.0};
+    fe2dem::Vec2 force_factor{{1.0, 1.0}};
     double moment_factor = 1.0;
-    fe2dem::Vec2 last_da{0.0, 0.0};
+    fe2dem::Vec2 last_da{{0.0, 0.0}};
     double last_dm = 0.0;
   };
   std::vector<ServoMemory> servo_memory_;
@@ -303,7 +333,7 @@ private:
   std::vector<fe2dem::Vec2> move_start_, move_target_;
   std::vector<double> rot_start_, rot_target_;
   int move_steps_ = 0, move_done_ = 0;
-  fe2dem::Mat2 affine_step_{0, 0, 0, 0};    ///< L dt of inner_start affine during the current move
+  fe2dem::Mat2 affine_step_{{0, 0, 0, 0}};    ///< L dt of inner_start affine during the current move
   std::vector<fe2dem::Vec2> affine_velocity_; ///< per local index, added this step
   double affine_spin_ = 0.0;
 
@@ -314,7 +344,7 @@ private:
   double unbalanced_sq_sum_ = 0.0;
 
   // solve state
-  fe2dem::Mat2 F_{1, 0, 0, 1};
+  fe2dem::Mat2 F_{{1, 0, 0, 1}};
   Status status_ = running;
   bool solve_pending_ = true;
   std::string failure_reason_;

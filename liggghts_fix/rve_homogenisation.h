@@ -37,9 +37,9 @@ struct ContactStatistics
   int n_contacts = 0;              ///< C: pairs with positive overlap
   double coordination = 0.0;       ///< 2C/N over the N physical particles
   double mechanical_coordination = 0.0; ///< (2C - N1)/(N - N0 - N1), N0/N1: particles with 0/1 contacts
-  Mat2 fabric{0, 0, 0, 0};         ///< Pi = (1/C) sum_c n_c (x) n_c
+  Mat2 fabric{{0, 0, 0, 0}};         ///< Pi = (1/C) sum_c n_c (x) n_c
   double anisotropy = 0.0;         ///< Pi_1/Pi_2 - 1
-  Mat2 love_weber_sum{0, 0, 0, 0}; ///< sum_c f_c (x) l_c, l_c = x_j - x_i (divide by volume)
+  Mat2 love_weber_sum{{0, 0, 0, 0}}; ///< sum_c f_c (x) l_c, l_c = x_j - x_i (divide by volume)
   double potential_energy = 0.0;   ///< (R12) 1/2 sum (f_n^2/k_n + f_s^2/k_s)
   double mean_force_sq = 0.0;      ///< mean |f_c|^2 (for R13)
   int n_sliding = 0;               ///< |f_s| >= (1 - 1e-6) mu |f_n|, -1 if mu unknown

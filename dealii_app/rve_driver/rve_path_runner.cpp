@@ -31,7 +31,7 @@ RvePathRunner::RvePathRunner(const Parameters& parameters)
   // secant iteration corrects it after the first trial.
   slope_iso_ = 2.0 * prm_.rve.kn;
   slope_lateral_ = prm_.rve.kn;
-  slopes_ = {prm_.rve.kn, 0.3 * prm_.rve.kn, 0.3 * prm_.rve.kn, prm_.rve.kn};
+  slopes_ = {{prm_.rve.kn, 0.3 * prm_.rve.kn, 0.3 * prm_.rve.kn, prm_.rve.kn}};
 }
 
 void RvePathRunner::open_output()
@@ -166,9 +166,9 @@ void RvePathRunner::run_isotropic_stage()
   {
     const double target = -prm_.path.pressure * k / n;
     const unsigned int its = control_stress(
-      lambda, target, slope_iso_, [](double l) { return Mat2{l, 0.0, 0.0, l}; },
+      lambda, target, slope_iso_, [](double l) { return Mat2{{l, 0.0, 0.0, l}}; },
       [](const Result& r) { return 0.5 * (r.sigma[0] + r.sigma[3]); }, "the mean stress");
-    F_ = {lambda, 0.0, 0.0, lambda};
+    F_ = {{lambda, 0.0, 0.0, lambda}};
     write_row(rve_.result(), its);
   }
 }
@@ -192,11 +192,11 @@ void RvePathRunner::run_biaxial_stage()
     if (prm_.path.pressure > 0.0)
       its = control_stress(
         F11, -prm_.path.pressure, slope_lateral_,
-        [F22](double f) { return Mat2{f, 0.0, 0.0, F22}; },
+        [F22](double f) { return Mat2{{f, 0.0, 0.0, F22}}; },
         [](const Result& r) { return r.sigma[0]; }, "the lateral stress sigma11");
     else
-      dem_steps_in_step_ += rve_.solve(Mat2{F11, 0.0, 0.0, F22}).dem_steps;
-    F_ = {F11, 0.0, 0.0, F22};
+      dem_steps_in_step_ += rve_.solve(Mat2{{F11, 0.0, 0.0, F22}}).dem_steps;
+    F_ = {{F11, 0.0, 0.0, F22}};
     write_row(rve_.result(), its);
   }
 }
@@ -206,7 +206,7 @@ void RvePathRunner::run_shear_stage()
   for (unsigned int k = 1; k <= prm_.path.loading_steps; ++k)
   {
     const double gamma = prm_.path.shear_strain * k / prm_.path.loading_steps;
-    const Mat2 F{F_[0], gamma, 0.0, F_[3]};
+    const Mat2 F{{F_[0], gamma, 0.0, F_[3]}};
     dem_steps_in_step_ += rve_.solve(F).dem_steps;
     write_row(rve_.result(), 0);
   }

@@ -57,7 +57,7 @@ private:
   unsigned int step_ = 0;
   long dem_steps_in_step_ = 0;
   double t_start_ = 0.0;
-  Mat2 F_{1, 0, 0, 1};
+  Mat2 F_{{1, 0, 0, 1}};
   double slope_iso_ = 0.0, slope_lateral_ = 0.0;
   Mat2 slopes_{};  ///< d sigma_c / d F_c estimates of the mixed control
 };

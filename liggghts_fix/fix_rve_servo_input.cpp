@@ -221,27 +221,22 @@ void FixRveServo::error_checks()
                         ") also integrates these particles; rve/servo integrates them itself";
       error->fix_error(FLERR, this, msg.c_str());
     }
-  if (!criterion_unbalanced_ && !(law_.kn > 0.0 && law_.kt > 0.0))
+  if (!criterion_unbalanced_ && !law_.has_energy())
     error->fix_error(FLERR, this, "keyword 'relax ekin_epot' needs the contact stiffnesses 'kn' and "
                                   "'kt' (fix property/global, hooke/stiffness); use 'relax "
                                   "unbalanced' for other contact laws");
   // Critical step (physics.md §2.7) of the lightest particle, single contact.
-  if (law_.kn > 0.0)
+  double m_min = 1e300;
+  for (int i = 0; i < atom->nlocal; ++i)
+    m_min = std::min(m_min, atom->rmass[i]);
+  const double dt_crit = law_.critical_step(m_min, inertia_factor_);
+  if (update->dt > dt_crit)
   {
-    double m_min = 1e300;
-    for (int i = 0; i < atom->nlocal; ++i)
-      m_min = std::min(m_min, atom->rmass[i]);
-    const double w_n = std::sqrt(law_.kn / m_min);
-    const double w_r = law_.kt > 0.0 ? std::sqrt(law_.kt / (inertia_factor_ * m_min)) : 0.0;
-    const double dt_crit = 2.0 / std::max(w_n, w_r);
-    if (update->dt > dt_crit)
-    {
-      std::ostringstream msg;
-      msg << "timestep " << update->dt << " is above the critical step " << dt_crit
-          << " (kn = " << law_.kn << ", kt = " << law_.kt << ", lightest mass " << m_min
-          << "); reduce 'timestep' below it (a fifth of it is usual)";
-      error->fix_error(FLERR, this, msg.str().c_str());
-    }
+    std::ostringstream msg;
+    msg << "timestep " << update->dt << " is above the critical step " << dt_crit
+        << " (kn = " << law_.kn << ", kt = " << law_.kt << ", lightest mass " << m_min
+        << "); reduce 'timestep' below it (a fifth of it is usual)";
+    error->fix_error(FLERR, this, msg.str().c_str());
   }
 }
 

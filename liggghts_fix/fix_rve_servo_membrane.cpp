@@ -142,7 +142,7 @@ void FixRveServo::collect_membrane_candidates()
 
 void FixRveServo::apply_membrane()
 {
-  if (!membrane_on_ || !(law_.kn > 0.0))
+  if (!membrane_on_ || !law_.has_normal_stiffness())
     return;
   double** x = atom->x;
   double** f = atom->f;
@@ -165,7 +165,7 @@ void FixRveServo::apply_membrane()
     if (t <= 0.0 || t >= 1.0)
       continue; // beyond the ends: the frame particles themselves are the contact
     const int ia = line.ia, ib = line.ib;
-    const double fn = law_.kn * (r - h);
+    const double fn = law_.normal_force(r - h);
     f[i][0] += fn * n[0];
     f[i][1] += fn * n[1];
     f[ia][0] -= (1.0 - t) * fn * n[0];

@@ -34,10 +34,10 @@ ContactStatistics contact_statistics(const std::vector<Contact>& contacts,
     const double fn = dot(c.force_on_i, n);
     const Vec2 ft = c.force_on_i - fn * n;
     const double fs = norm(ft);
-    if (law.kn > 0.0 && law.kt > 0.0)
-      s.potential_energy += 0.5 * (fn * fn / law.kn + fs * fs / law.kt);
+    if (law.has_energy())
+      s.potential_energy += law.potential_energy(fn, fs);
     s.mean_force_sq += dot(c.force_on_i, c.force_on_i);
-    if (law.friction >= 0.0 && fs >= (1.0 - 1e-6) * law.friction * std::abs(fn) && fs > 0.0)
+    if (law.sliding(fn, fs))
       ++s.n_sliding;
     const double rel = overlap / std::min(c.ri, c.rj);
     s.max_overlap = std::max(s.max_overlap, rel);

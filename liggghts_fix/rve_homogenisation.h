@@ -9,6 +9,7 @@
  */
 #pragma once
 
+#include "contact_law.h"
 #include "rve_frame.h"
 
 #include <vector>
@@ -22,14 +23,6 @@ struct Contact
   Vec2 xi{}, xj{};      ///< current centres
   double ri = 0.0, rj = 0.0;
   Vec2 force_on_i{};    ///< total contact force exerted by j on i
-};
-
-/// Contact-law constants needed for the statistics.
-struct ContactLaw
-{
-  double kn = 0.0;       ///< normal stiffness (0: unknown, no E_pot)
-  double kt = 0.0;       ///< tangential stiffness
-  double friction = -1;  ///< Coulomb coefficient (< 0: unknown, no sliding count)
 };
 
 struct ContactStatistics

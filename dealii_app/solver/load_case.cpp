@@ -178,7 +178,7 @@ typename LoadCase<dim>::Constraints AffineLoadCase<dim>::constraints(unsigned in
   const Tensor<2, dim> F = F_at(fraction);
   typename LoadCase<dim>::Constraints values;
   for (types::global_dof_index i = 0; i < d.position.size(); ++i)
-    if (d.faces[i] != 0)
+    if ((d.faces[i] & 0xFu) != 0) // on an edge of the bounding box (ids 0-3)
     {
       const Point<dim>& X = d.position[i];
       values[i] = (F * X - X)[d.component[i]];

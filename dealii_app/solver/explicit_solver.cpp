@@ -7,10 +7,8 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
@@ -220,8 +218,7 @@ void ExplicitSolver<dim>::setup_system()
 template <int dim>
 void ExplicitSolver<dim>::assemble_lumped_mass()
 {
-  const QGauss<dim>& quadrature = quadrature_;
-  FEValues<dim> fe_values(fe_, quadrature, update_values | update_JxW_values);
+  FEValues<dim> fe_values(fe_, quadrature_, update_values | update_JxW_values);
   std::vector<types::global_dof_index> dofs(fe_.dofs_per_cell);
   for (const auto& cell : dof_handler_.active_cell_iterators())
   {
@@ -229,7 +226,7 @@ void ExplicitSolver<dim>::assemble_lumped_mass()
     cell->get_dof_indices(dofs);
     std::vector<double> nn(fe_.dofs_per_cell, 0.0);
     double volume = 0.0;
-    for (unsigned int q = 0; q < quadrature.size(); ++q)
+    for (unsigned int q = 0; q < quadrature_.size(); ++q)
     {
       volume += fe_values.JxW(q);
       for (unsigned int i = 0; i < fe_.dofs_per_cell; ++i)
@@ -269,11 +266,7 @@ void ExplicitSolver<dim>::update_stresses()
     }
   }
   TimerOutput::Scope t(timer_, "RVE solves");
-  const EvaluationCost c = material_->evaluate(ip_);
-  cost_in_step_.dem_steps += c.dem_steps;
-  cost_in_step_.solves += c.solves;
-  cost_in_step_.unconverged += c.unconverged;
-  cost_in_step_.seconds += c.seconds;
+  cost_in_step_ += material_->evaluate(ip_);
 }
 
 template <int dim>

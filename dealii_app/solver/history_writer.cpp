@@ -2,6 +2,7 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <type_traits>
 
@@ -151,56 +152,42 @@ void HistoryWriter::append(int step, double axial_strain, const std::vector<IpRe
   constexpr std::size_t n = dim * dim;
   append_row(file_, "step", H5T_NATIVE_INT, n_steps_, &step);
   append_row(file_, "axial_strain", H5T_NATIVE_DOUBLE, n_steps_, &axial_strain);
-  std::vector<double> t(n * n_ip_), d(n_ip_);
-  std::vector<long> l(n_ip_);
-  auto tensor = [&](const char* name, const char* unit, const char* description, auto value_of) {
-    create_once(name, H5T_NATIVE_DOUBLE, n, unit, description);
-    for (std::size_t p = 0; p < n_ip_; ++p)
-      for (std::size_t k = 0; k < n; ++k)
-        t[n * p + k] = value_of(ips[p])[k];
-    append_row(file_, name, H5T_NATIVE_DOUBLE, n_steps_, t.data());
-  };
-  tensor("F", "1", "deformation gradient dx/dX, row-major 11 12 21 22",
-         [](const IpRecord<dim>& r) { return r.F; });
-  tensor("P", "N/m", "first Piola-Kirchhoff stress, row-major, tension positive",
-         [](const IpRecord<dim>& r) { return r.P; });
-  tensor("sigma", "N/m", "Cauchy stress P F^T / det F, row-major, tension positive",
-         [](const IpRecord<dim>& r) { return r.sigma; });
-  // One dataset per statistic, in the order of rve_statistics.h, read from
-  // each IP's packed statistics (counts are exact in doubles).
-  constexpr std::size_t width = RveStatistics<dim>::packed_size();
-  std::vector<double> packed(width * n_ip_);
+  // Each IP's values as one row of doubles: F, P, sigma, then the packed
+  // statistics (rve_statistics.h order; counts are exact in doubles).
+  constexpr std::size_t stride = 3 * n + RveStatistics<dim>::packed_size();
+  std::vector<double> rows(stride * n_ip_);
   for (std::size_t p = 0; p < n_ip_; ++p)
-    ips[p].statistics.pack(&packed[width * p]);
+  {
+    double* row = &rows[stride * p];
+    for (const auto* t : {&ips[p].F, &ips[p].P, &ips[p].sigma})
+      row = std::copy(t->begin(), t->end(), row);
+    ips[p].statistics.pack(row);
+  }
   std::size_t offset = 0;
+  // Dataset @p name from the next @p width columns (0: one, as [s][n_ip]).
+  auto columns = [&](const char* name, const char* unit, const char* description, std::size_t width,
+                     auto type_tag) {
+    using T = decltype(type_tag);
+    const std::size_t w = std::max<std::size_t>(width, 1);
+    std::vector<T> v(w * n_ip_);
+    for (std::size_t p = 0; p < n_ip_; ++p)
+      for (std::size_t k = 0; k < w; ++k)
+        v[w * p + k] = static_cast<T>(rows[stride * p + offset + k]);
+    const hid_t type = std::is_same_v<T, long> ? H5T_NATIVE_LONG : H5T_NATIVE_DOUBLE;
+    create_once(name, type, width, unit, description);
+    append_row(file_, name, type, n_steps_, v.data());
+    offset += w;
+  };
+  columns("F", "1", "deformation gradient dx/dX, row-major 11 12 21 22", n, 0.0);
+  columns("P", "N/m", "first Piola-Kirchhoff stress, row-major, tension positive", n, 0.0);
+  columns("sigma", "N/m", "Cauchy stress P F^T / det F, row-major, tension positive", n, 0.0);
   RveStatistics<dim>().for_each([&](const char* name, const char* unit, const char* description,
                                     const auto& kind) {
     using T = std::decay_t<decltype(kind)>;
-    if constexpr (std::is_same_v<T, double>)
-    {
-      create_once(name, H5T_NATIVE_DOUBLE, 0, unit, description);
-      for (std::size_t p = 0; p < n_ip_; ++p)
-        d[p] = packed[width * p + offset];
-      append_row(file_, name, H5T_NATIVE_DOUBLE, n_steps_, d.data());
-      offset += 1;
-    }
-    else if constexpr (std::is_same_v<T, long>)
-    {
-      create_once(name, H5T_NATIVE_LONG, 0, unit, description);
-      for (std::size_t p = 0; p < n_ip_; ++p)
-        l[p] = static_cast<long>(packed[width * p + offset]);
-      append_row(file_, name, H5T_NATIVE_LONG, n_steps_, l.data());
-      offset += 1;
-    }
+    if constexpr (std::is_same_v<T, long>)
+      columns(name, unit, description, 0, 0L);
     else
-    {
-      create_once(name, H5T_NATIVE_DOUBLE, n, unit, description);
-      for (std::size_t p = 0; p < n_ip_; ++p)
-        for (std::size_t k = 0; k < n; ++k)
-          t[n * p + k] = packed[width * p + offset + k];
-      append_row(file_, name, H5T_NATIVE_DOUBLE, n_steps_, t.data());
-      offset += n;
-    }
+      columns(name, unit, description, std::is_same_v<T, double> ? 0 : n, 0.0);
   });
   ++n_steps_;
   H5Fflush(file_, H5F_SCOPE_GLOBAL);

@@ -22,6 +22,11 @@ struct EvaluationCost
   long solves = 0;      ///< RVE solves (skipped ones not counted)
   long unconverged = 0; ///< bounded solves that stopped at their step limit
   double seconds = 0.0; ///< this rank's wall seconds in RVE solves
+  EvaluationCost& operator+=(const EvaluationCost& c)
+  {
+    dem_steps += c.dem_steps, solves += c.solves, unconverged += c.unconverged, seconds += c.seconds;
+    return *this;
+  }
 };
 
 template <int dim>

@@ -26,7 +26,7 @@ void check(std::ofstream& out, const std::string& file)
 }
 } // namespace
 
-void write_particle_dump(const LAMMPS_NS::FixRveServo& fix, const std::string& prefix,
+void write_particle_dump(const LAMMPS_NS::FixRveServo<2>& fix, const std::string& prefix,
                          long timestep)
 {
   const auto particles = fix.particles();
@@ -53,13 +53,13 @@ void write_particle_dump(const LAMMPS_NS::FixRveServo& fix, const std::string& p
   const std::string cfile = prefix + ".contacts";
   std::ofstream con = open(cfile);
   std::size_t n = 0;
-  for (const Contact& c : fix.contacts())
+  for (const Contact<2>& c : fix.contacts())
     n += std::hypot(c.xj[0] - c.xi[0], c.xj[1] - c.xi[1]) < c.ri + c.rj;
   con << "ITEM: TIMESTEP\n" << timestep << "\nITEM: NUMBER OF ENTRIES\n" << n
       << "\nITEM: BOX BOUNDS ff ff pp\n"
       << lo[0] << ' ' << hi[0] << '\n' << lo[1] << ' ' << hi[1] << "\n-0.5 0.5\n"
       << "ITEM: ENTRIES id1 id2 x1 y1 x2 y2 fn ft\n";
-  for (const Contact& c : fix.contacts())
+  for (const Contact<2>& c : fix.contacts())
   {
     const double dx = c.xj[0] - c.xi[0], dy = c.xj[1] - c.xi[1], d = std::hypot(dx, dy);
     if (!(d < c.ri + c.rj))

@@ -23,6 +23,6 @@ namespace fe2dem
  * @p fix. @param timestep the TIMESTEP written in both headers (e.g. the
  * macro load step). @throws std::runtime_error naming a file it cannot write.
  */
-void write_particle_dump(const LAMMPS_NS::FixRveServo& fix, const std::string& prefix,
+void write_particle_dump(const LAMMPS_NS::FixRveServo<2>& fix, const std::string& prefix,
                          long timestep);
 } // namespace fe2dem

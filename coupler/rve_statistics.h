@@ -8,7 +8,7 @@
  *
  * Columns: kind (tensor: dim x dim, row-major {11, 12, 21, 22}; scalar:
  * double; count: integer), name (history.h5 dataset), unit, description,
- * source (an expression on `r`, the fix's FixRveServo::Result; expanded
+ * source (an expression on `r`, the fix's FixRveServo<2>::Result; expanded
  * only on the LIGGGHTS side of the coupler).
  * Conventions: tension positive; 2D stresses are force per length.
  */

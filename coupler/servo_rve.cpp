@@ -98,7 +98,7 @@ void ServoRve::open_instance(const std::string& restart_file)
     instance_->set_variable("rve_restart_file", restart_file);
   }
   instance_->file(setup_.template_file);
-  fix_ = &instance_->fix<LAMMPS_NS::FixRveServo>(setup_.fix_id);
+  fix_ = &instance_->fix<LAMMPS_NS::FixRveServo<2>>(setup_.fix_id);
   budget_ = fix_->max_steps();
   limited_ = false; // a new instance has the template's budget
 }
@@ -156,7 +156,7 @@ const RveResponse<2>& ServoRve::response() const
   return response_;
 }
 
-RveResponse<2> to_response(const LAMMPS_NS::FixRveServo::Result& r)
+RveResponse<2> to_response(const LAMMPS_NS::FixRveServo<2>::Result& r)
 {
   RveResponse<2> out;
   out.F = r.F;
@@ -212,20 +212,20 @@ void ServoRve::run_until_done(bool bounded)
   // lists rebuilt from scratch), as a restored instance must: that makes
   // restore and rollback bitwise; later chunks skip it.
   bool first = true;
-  while (fix_->status() == LAMMPS_NS::FixRveServo::running)
+  while (fix_->status() == LAMMPS_NS::FixRveServo<2>::running)
   {
     const std::string n = std::to_string(fix_->check_interval());
     instance_->command(first ? "run " + n + " post no" : "run " + n + " pre no post no");
     first = false;
   }
   last_seconds_ = MPI_Wtime() - t0;
-  last_converged_ = fix_->status() == LAMMPS_NS::FixRveServo::converged;
+  last_converged_ = fix_->status() == LAMMPS_NS::FixRveServo<2>::converged;
   // A bounded solve that used its steps is not a failure: the fix homogenised
   // the state it stopped in, and the next solve continues from there.
-  if (bounded && fix_->status() == LAMMPS_NS::FixRveServo::over_budget)
+  if (bounded && fix_->status() == LAMMPS_NS::FixRveServo<2>::over_budget)
     return;
   if (!last_converged_)
-    throw RveSolveError(fix_->status(), std::string(LAMMPS_NS::FixRveServo::status_name(
+    throw RveSolveError(fix_->status(), std::string(LAMMPS_NS::FixRveServo<2>::status_name(
                                           fix_->status())) +
                                           ": " + fix_->failure_reason());
 }

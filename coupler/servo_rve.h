@@ -29,17 +29,17 @@ namespace fe2dem
 class RveSolveError : public std::runtime_error
 {
 public:
-  RveSolveError(LAMMPS_NS::FixRveServo::Status s, const std::string& what)
+  RveSolveError(LAMMPS_NS::FixRveServo<2>::Status s, const std::string& what)
     : std::runtime_error(what), status(s)
   {
   }
-  LAMMPS_NS::FixRveServo::Status status;
+  LAMMPS_NS::FixRveServo<2>::Status status;
 };
 
 class ServoRve : public Rve<2>
 {
 public:
-  using Result = LAMMPS_NS::FixRveServo::Result;
+  using Result = LAMMPS_NS::FixRveServo<2>::Result;
 
   /// Builds the instance, relaxes the packing at F = I and commits that state.
   explicit ServoRve(const RveSetup& setup, HistoryMode mode = HistoryMode::continuous);
@@ -86,7 +86,7 @@ public:
   void write_particles(const std::string& prefix, long timestep) const override;
 
   const Result& result() const { return fix_->result(); }
-  LAMMPS_NS::FixRveServo& fix() { return *fix_; }
+  LAMMPS_NS::FixRveServo<2>& fix() { return *fix_; }
   LiggghtsInstance& instance() { return *instance_; }
   HistoryMode history_mode() const { return mode_; }
   /// Bytes of the committed state image (the memory an RVE keeps besides LIGGGHTS).
@@ -109,7 +109,7 @@ private:
   bool at_committed_state_ = false;
   Mat2 committed_F_{{1, 0, 0, 1}}; ///< F of the committed state
   std::unique_ptr<LiggghtsInstance> instance_;
-  LAMMPS_NS::FixRveServo* fix_ = nullptr;
+  LAMMPS_NS::FixRveServo<2>* fix_ = nullptr;
   double last_seconds_ = 0.0;
   long budget_ = 0;      ///< the template's step budget (max_steps), restored after bounded solves
   bool limited_ = false; ///< the fix's max_steps is currently a bound of limit_steps()
@@ -119,5 +119,5 @@ private:
 };
 
 /// rve_to_macro: the fix's result as the macro side sees it (rve_statistics.h).
-RveResponse<2> to_response(const LAMMPS_NS::FixRveServo::Result& r);
+RveResponse<2> to_response(const LAMMPS_NS::FixRveServo<2>::Result& r);
 } // namespace fe2dem

@@ -1,18 +1,21 @@
 /**
  * @file fix_rve_servo.h
- * LIGGGHTS fix `rve/servo`: a 2D representative volume element whose frame
- * of boundary particles is kept periodic under a macro deformation F by a
- * servo-control loop (physics.md §2.2, §2.5), with Cundall local damping of
- * the inner particles and stress homogenisation (§2.3, §2.6).
+ * LIGGGHTS fix `rve/servo`: a representative volume element (2D or 3D)
+ * whose frame of boundary particles is kept periodic under a macro
+ * deformation F by a servo-control loop (physics.md §2.2, §2.5), with
+ * Cundall local damping of the inner particles and stress homogenisation
+ * (§2.3, §2.6). The script's `dimension` chooses FixRveServo<2> or <3>.
  *
  * Syntax:
  *
- *     fix ID all rve/servo frame FRAMEGROUP cell Lx Ly [keyword value ...]
+ *     fix ID all rve/servo frame FRAMEGROUP cell Lx Ly [Lz] [keyword value ...]
  *
- *     F f11 f12 f21 f22        macro deformation (numbers or v_name), default I
+ *     F f11 f12 f21 f22        macro deformation (numbers or v_name), default I;
+ *                              3D: nine values f11 f12 f13 f21 ... f33
  *     damping alpha beta       Cundall damping of force / moment, default 0.7 0.7
  *     rotation free|locked     inner-particle rotations, default free
- *     inertia disc|sphere      moment of inertia 0.5 or 0.4 m r^2, default disc
+ *     inertia disc|sphere      moment of inertia 0.5 or 0.4 m r^2, default disc (2D);
+ *                              3D: sphere only
  *     gains ga gm              dimensionless servo gains g_a M/dt^2, g_m M R^2/dt^2,
  *                              default 5 10 (see README: the paper's 100 200
  *                              diverge with our reading of the units)
@@ -41,9 +44,10 @@
  *                              normal contact stiffness, the reaction going to those
  *                              two frame particles (and so into P); keeps particles
  *                              from slipping through gaps that open when the frame
- *                              stretches. Default yes (see README)
+ *                              stretches. Default yes (see README). 2D only: in 3D
+ *                              the default is no and 'yes' is refused
  *
- * `fix_modify ID F f11 f12 f21 f22` starts a new solve under a new F;
+ * `fix_modify ID F f11 f12 f21 f22` (3D: nine values) starts a new solve under a new F;
  * `fix_modify ID max_steps N` changes the step budget (not kept in restarts). The
  * solve advances while the script (or C++) runs steps; f_ID[1] is the status.
  *
@@ -52,10 +56,11 @@
  * prescribed velocities so that tangential contact history sees the motion.
  *
  * One physical contact, one count (physics.md §2.1): a contact between two
- * frame particles that are both +Lx images (or both +Ly images) is the second
- * copy of the contact between their originals. The fix puts the images into
- * groups ID_image_x and ID_image_y and excludes pairs inside each group from
- * LIGGGHTS' neighbour lists (two of LIGGGHTS' 32 groups), so every force,
+ * frame particles that are both +Lx images (or both +Ly, +Lz images) is the
+ * second copy of the contact between their originals. The fix puts the images
+ * into groups ID_image_x, ID_image_y (, ID_image_z) and excludes pairs inside
+ * each group from LIGGGHTS' neighbour lists (two or three of LIGGGHTS' 32
+ * groups), so every force,
  * stress, energy and statistic holds each physical contact once; coordination
  * counts each physical particle once.
  *
@@ -63,10 +68,10 @@
  * results) goes into restart files: write_restart / read_restart and
  * re-issuing the same fix command continue a solve bit for bit.
  *
- * Conventions: tension positive; tensors row-major {11, 12, 21, 22};
- * frame forces a_q are the forces the frame applies to particle q.
- * Requires `atom_modify map array`, `atom_style sphere`, `dimension 2`, a
- * granular pair style, and the fix defined before the first run.
+ * Conventions: tension positive; tensors row-major ({11, 12, 21, 22} in 2D,
+ * {11, 12, 13, 21, ..., 33} in 3D); frame forces a_q are the forces the frame
+ * applies to particle q. Requires `atom_modify map array`, `atom_style
+ * sphere`, a granular pair style, and the fix defined before the first run.
  */
 #ifdef FIX_CLASS
 // Registered at run time by fe2dem::register_styles(), not by LIGGGHTS' style_fix.h.
@@ -87,9 +92,16 @@
 
 namespace LAMMPS_NS
 {
+template <int dim>
 class FixRveServo : public Fix
 {
 public:
+  using Vector = fe2dem::Vec<dim>;
+  using Tensor = fe2dem::Mat<dim>;
+  using Rotation = fe2dem::Spin<dim>; ///< angle (2D) or rotation vector (3D)
+  static constexpr int n_tensor = dim * dim;
+  static constexpr int n_spin = dim == 2 ? 1 : 3;
+
   /// Outcome of the current solve. Values are those of f_ID[1].
   enum Status
   {
@@ -103,7 +115,7 @@ public:
 
   /**
    * The global vector f_ID[k + 1] = compute_vector(k), by name (README table).
-   * Tensors take four consecutive entries, row-major {11, 12, 21, 22}.
+   * Tensors take dim^2 consecutive entries, row-major (2D: 4, 3D: 9).
    */
   enum Output : int
   {
@@ -114,28 +126,29 @@ public:
     out_ekin_epot = 4,
     out_unbalanced = 5,
     out_P = 6,
-    out_sigma = 10,
-    out_sigma_lw = 14,
-    out_F_check = 18,
-    out_coordination = 22,
-    out_mechanical_coordination = 23,
-    out_anisotropy = 24,
-    out_packing_fraction = 25,
-    out_sliding_contacts = 26,
-    out_max_overlap = 27,
-    out_contacts = 28,
-    out_max_inner_omega = 29,
-    out_fabric = 30,
-    out_F = 34,
-    out_membrane_steps = 38,
-    out_size = 39 ///< length of the vector
+    out_sigma = out_P + n_tensor,
+    out_sigma_lw = out_sigma + n_tensor,
+    out_F_check = out_sigma_lw + n_tensor,
+    out_coordination = out_F_check + n_tensor,
+    out_mechanical_coordination,
+    out_anisotropy,
+    out_packing_fraction, ///< 3D: solid volume fraction
+    out_sliding_contacts,
+    out_max_overlap,
+    out_contacts,
+    out_max_inner_omega,
+    out_fabric,
+    out_F = out_fabric + n_tensor,
+    out_membrane_steps = out_F + n_tensor,
+    out_fabric_deviator, ///< fe2dem::fabric_deviator of the fabric
+    out_size ///< length of the vector (2D: 40, 3D: 70)
   };
 
   /// Everything a solve returns; updated at every convergence check.
   struct Result
   {
-    fe2dem::Mat2 F{{1, 0, 0, 1}}, F_check{{1, 0, 0, 1}};
-    fe2dem::Mat2 P{}, sigma{}, sigma_lw{};
+    Tensor F = fe2dem::identity<dim>(), F_check = fe2dem::identity<dim>();
+    Tensor P{}, sigma{}, sigma_lw{};
     double residual = 0.0;        ///< r_a (R14)
     double ekin_epot = 0.0;       ///< (R12) over inner particles
     double unbalanced = 0.0;      ///< (R13)
@@ -144,7 +157,7 @@ public:
     int servo_iterations = 0;
     long dem_steps = 0;           ///< steps of this solve
     long membrane_steps = 0;      ///< particle-steps of this solve with a membrane contact
-    fe2dem::ContactStatistics contacts;
+    fe2dem::ContactStatistics<dim> contacts;
   };
 
   FixRveServo(class LAMMPS*, int, char**);
@@ -164,21 +177,21 @@ public:
   void restart(char*) override;
 
   /// Starts a new solve under macro deformation F (row-major), as `fix_modify ID F` does.
-  void set_deformation(const fe2dem::Mat2& F);
+  void set_deformation(const Tensor& F);
   /// Step budget of the solves from now on, as `fix_modify ID max_steps` sets it. @pre n >= 1.
   void set_max_steps(long n);
   Status status() const { return status_; }
   static const char* status_name(Status s);
   const Result& result() const { return result_; }
-  const fe2dem::FrameTopology& frame() const { return frame_; }
+  const fe2dem::FrameTopology<dim>& frame() const { return frame_; }
   /// Current frame positions relative to the cell origin, in frame order.
-  std::vector<fe2dem::Vec2> frame_positions() const;
+  std::vector<Vector> frame_positions() const;
   /// Forces a_q the frame applied in the last step, in frame order.
-  const std::vector<fe2dem::Vec2>& frame_forces() const { return frame_force_; }
-  /// Frame fluctuations w per edge pair and rotations (pairs, then corners).
-  const std::vector<fe2dem::Vec2>& fluctuations() const { return w_; }
+  const std::vector<Vector>& frame_forces() const { return frame_force_; }
+  /// Frame fluctuations w per group (edge pair in 2D; face pair or edge group in 3D).
+  const std::vector<Vector>& fluctuations() const { return w_; }
   /// Current rotation of each frame particle, in frame order.
-  const std::vector<double>& frame_rotations() const { return theta_frame_; }
+  const std::vector<Rotation>& frame_rotations() const { return theta_frame_; }
   /// Steps of the current frame move still to run (0: the frame is at rest).
   int frame_move_steps_left() const { return move_steps_ - move_done_; }
   /// Steps between checks: C++ drivers run chunks of this length.
@@ -189,14 +202,14 @@ public:
   struct Particle
   {
     int tag = 0;
-    fe2dem::Vec2 x{};  ///< current centre
+    Vector x{};  ///< current centre
     double radius = 0.0;
     bool frame = false; ///< boundary (frame) particle
   };
   /// All particles, indexed like Contact::i and Contact::j of contacts().
   std::vector<Particle> particles() const;
   /// Contacts found at the last convergence check (end of the last solve).
-  const std::vector<fe2dem::Contact>& contacts() const { return contacts_; }
+  const std::vector<fe2dem::Contact<dim>>& contacts() const { return contacts_; }
   /// Human-readable reason of the last failure (empty if none).
   const std::string& failure_reason() const { return failure_reason_; }
 
@@ -205,14 +218,14 @@ private:
   void parse_arguments(int narg, char** arg);
   void parse_deformation(char** arg, const char* where);
   void error_checks();
-  fe2dem::Mat2 evaluate_deformation();
-  /// @p F if det F > 0, else an error naming keyword F.
-  fe2dem::Mat2 checked_deformation(const fe2dem::Mat2& F);
+  Tensor evaluate_deformation();
+  /// @p F if finite with det F > 0, else an error naming keyword F.
+  Tensor checked_deformation(const Tensor& F);
   void lookup_contact_law();
 
   // --- servo state machine ----------------------------------------------
   /// Starts a solve under @p F, or under keyword F's values if null.
-  void begin_solve(const fe2dem::Mat2* F = nullptr);
+  void begin_solve(const Tensor* F = nullptr);
   void schedule_frame_move();
   /// Kinetic energy of the inner particles; flags escape and blow-up.
   double check_particles();
@@ -221,6 +234,16 @@ private:
   /// Relaxation test, convergence decision or servo correction at a check.
   void servo_check(double ekin);
   double servo_residual() const;
+  /// Sum of a per-frame-particle value over the images of group @p g.
+  template <class T>
+  static T group_sum(const std::vector<T>& per_particle, const typename fe2dem::FrameTopology<dim>::Group& g)
+  {
+    using fe2dem::operator+;
+    T sum = per_particle[g[0]];
+    for (std::size_t m = 1; m < g.size() && g[m] >= 0; ++m)
+      sum = sum + per_particle[g[m]];
+    return sum;
+  }
   void apply_servo_correction();
   void fail(Status s, const std::string& reason);
   /// The contact of contacts_ with the largest overlap, for messages.
@@ -288,11 +311,11 @@ private:
   // parameters
   std::string frame_group_;
   int frame_groupbit_ = 0;
-  double Lx_ = 0.0, Ly_ = 0.0;
-  std::vector<std::string> F_input_; // 4 entries: numbers or v_names
+  Vector L_{}; ///< keyword cell
+  std::vector<std::string> F_input_; // dim^2 entries: numbers or v_names
   double alpha_ = 0.7, beta_ = 0.7;
   bool lock_rotation_ = false;
-  double inertia_factor_ = 0.5;
+  double inertia_factor_ = dim == 2 ? 0.5 : 0.4;
   double gain_a_ = 5.0, gain_m_ = 10.0;
   bool criterion_unbalanced_ = false;
   double relax_tol_ = 1e-3;
@@ -304,54 +327,61 @@ private:
   bool affine_inner_ = false; ///< inner_start affine
   double move_rate_ = 1e-3;
   bool error_on_failure_ = true;
-  bool membrane_on_ = true;
+  bool membrane_on_ = dim == 2;
   double max_overlap_ = 0.5;
 
   // frame
-  fe2dem::FrameTopology frame_;
+  fe2dem::FrameTopology<dim> frame_;
   double r_min_ = 0.0, r_max_ = 0.0;
-  double area_particles_ = 0.0; ///< particle area inside the periodic cell
+  double area_particles_ = 0.0; ///< particle area (3D: volume) inside the periodic cell
   fe2dem::ContactLaw law_;
 
-  // servo unknowns: fluctuation and rotation per edge pair; common corner rotation
-  std::vector<fe2dem::Vec2> w_;
-  std::vector<double> theta_pair_;
-  double theta_corner_ = 0.0;
-  /// Adaptive gain state of one edge pair (or of the corners).
+  // servo unknowns: fluctuation and rotation per group; common corner rotation
+  std::vector<Vector> w_;
+  std::vector<Rotation> theta_pair_;
+  Rotation theta_corner_{};
+  template <class T>
+  static T ones()
+  {
+    T v;
+    v.fill(1.0);
+    return v;
+  }
+  /// Adaptive gain state of one group (or of the corners), per component.
   struct ServoMemory
   {
-    fe2dem::Vec2 force_factor{{1.0, 1.0}};
-    double moment_factor = 1.0;
-    fe2dem::Vec2 last_da{{0.0, 0.0}};
-    double last_dm = 0.0;
+    Vector force_factor = ones<Vector>();
+    Rotation moment_factor = ones<Rotation>();
+    Vector last_da{};
+    Rotation last_dm{};
   };
   std::vector<ServoMemory> servo_memory_;
   ServoMemory servo_memory_corner_;
-  std::vector<double> theta_frame_; ///< current rotation of each frame particle
+  std::vector<Rotation> theta_frame_; ///< current rotation of each frame particle
 
   // prescribed frame motion
-  std::vector<fe2dem::Vec2> move_start_, move_target_;
-  std::vector<double> rot_start_, rot_target_;
+  std::vector<Vector> move_start_, move_target_;
+  std::vector<Rotation> rot_start_, rot_target_;
   int move_steps_ = 0, move_done_ = 0;
-  fe2dem::Mat2 affine_step_{{0, 0, 0, 0}};    ///< L dt of inner_start affine during the current move
-  std::vector<fe2dem::Vec2> affine_velocity_; ///< per local index, added this step
-  double affine_spin_ = 0.0;
+  Tensor affine_step_{};               ///< L dt of inner_start affine during the current move
+  std::vector<Vector> affine_velocity_; ///< per local index, added this step
+  Rotation affine_spin_{};
 
   // per-step records
-  std::vector<int> frame_local_;          ///< local index of each frame particle
-  std::vector<fe2dem::Vec2> frame_force_; ///< a_q
-  std::vector<double> frame_moment_;      ///< m_q
+  std::vector<int> frame_local_;      ///< local index of each frame particle
+  std::vector<Vector> frame_force_;   ///< a_q
+  std::vector<Rotation> frame_moment_; ///< m_q
   double unbalanced_sq_sum_ = 0.0;
 
   // solve state
-  fe2dem::Mat2 F_{{1, 0, 0, 1}};
+  Tensor F_ = fe2dem::identity<dim>();
   Status status_ = running;
   bool solve_pending_ = true;
   std::string failure_reason_;
   Result result_;
   class Compute* contacts_compute_ = nullptr;
   std::string contacts_compute_id_;
-  std::vector<fe2dem::Contact> contacts_;
+  std::vector<fe2dem::Contact<dim>> contacts_;
   std::vector<int> tag_to_dense_;
   int n_particles_ = 0;           ///< RVE bodies (frame images counted separately)
   std::vector<int> physical_of_;  ///< dense index -> dense index of its physical particle

@@ -1,5 +1,6 @@
 #include "register_styles.h"
 
+#include "domain.h"
 #include "fix_rve_servo.h"
 #include "lammps.h"
 #include "modify.h"
@@ -28,10 +29,12 @@ struct ExposeMember
 };
 template struct ExposeMember<ModifyFixMap, &LAMMPS_NS::Modify::fix_map>;
 
-template <typename T>
-LAMMPS_NS::Fix* create_fix(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg)
+/// fix rve/servo in the script's dimension (set before any fix can be defined).
+LAMMPS_NS::Fix* create_rve_servo(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg)
 {
-  return new T(lmp, narg, arg);
+  if (lmp->domain->dimension == 3)
+    return new LAMMPS_NS::FixRveServo<3>(lmp, narg, arg);
+  return new LAMMPS_NS::FixRveServo<2>(lmp, narg, arg);
 }
 } // namespace
 
@@ -40,6 +43,6 @@ namespace fe2dem
 void register_styles(LAMMPS_NS::LAMMPS* lmp)
 {
   FixMap* map = lmp->modify->*member(ModifyFixMap{});
-  (*map)["rve/servo"] = &create_fix<LAMMPS_NS::FixRveServo>;
+  (*map)["rve/servo"] = &create_rve_servo;
 }
 } // namespace fe2dem

@@ -9,10 +9,14 @@ namespace fe2dem
 {
 namespace
 {
-std::string describe(int tag, const Vec2& X)
+template <std::size_t n>
+std::string describe(int tag, const std::array<double, n>& X)
 {
   std::ostringstream s;
-  s << "frame particle id " << tag << " at (" << X[0] << ", " << X[1] << ")";
+  s << "frame particle id " << tag << " at (" << X[0];
+  for (std::size_t k = 1; k < n; ++k)
+    s << ", " << X[k];
+  s << ")";
   return s.str();
 }
 
@@ -24,16 +28,24 @@ std::string format(double v)
 }
 
 /// Index of the particle at position p, or -1.
-int find_at(const std::vector<Vec2>& X, const Vec2& p, double tol)
+template <std::size_t n>
+int find_at(const std::vector<std::array<double, n>>& X, const std::array<double, n>& p, double tol)
 {
   for (std::size_t i = 0; i < X.size(); ++i)
-    if (std::abs(X[i][0] - p[0]) <= tol && std::abs(X[i][1] - p[1]) <= tol)
+  {
+    bool match = true;
+    for (std::size_t k = 0; k < n && match; ++k)
+      match = std::abs(X[i][k] - p[k]) <= tol;
+    if (match)
       return static_cast<int>(i);
+  }
   return -1;
 }
 
 /// Index of the frame particle at each one's image X + shift, or -1.
-std::vector<int> images_at(const std::vector<Vec2>& X, const Vec2& shift, double tol)
+template <std::size_t n>
+std::vector<int> images_at(const std::vector<std::array<double, n>>& X,
+                           const std::array<double, n>& shift, double tol)
 {
   std::vector<int> image(X.size());
   for (std::size_t i = 0; i < X.size(); ++i)
@@ -111,42 +123,46 @@ EdgePairs pair_edge_particles(const std::vector<int>& tags, const std::vector<Ve
 
 /// (R1): each frame segment's normal is shared between its two ends in the
 /// ratio of their radii, so the split point is the (near) contact point.
-void set_area_vectors(FrameTopology& frame)
+void set_area_vectors(FrameTopology<2>& frame)
 {
   const int m = static_cast<int>(frame.particles.size());
   for (int q = 0; q < m; ++q)
   {
-    const FrameParticle& prev = frame.particles[(q + m - 1) % m];
-    const FrameParticle& next = frame.particles[(q + 1) % m];
-    FrameParticle& p = frame.particles[q];
+    const FrameParticle<2>& prev = frame.particles[(q + m - 1) % m];
+    const FrameParticle<2>& next = frame.particles[(q + 1) % m];
+    FrameParticle<2>& p = frame.particles[q];
     p.area_vector = (p.radius / (p.radius + prev.radius)) * cross_e3(p.X - prev.X) +
                     (p.radius / (p.radius + next.radius)) * cross_e3(next.X - p.X);
   }
 }
-} // namespace
 
-FrameTopology build_frame_topology(const std::vector<int>& tags, const std::vector<Vec2>& X,
-                                   const std::vector<double>& radius, double Lx, double Ly,
-                                   double tol)
+template <int dim>
+void check_frame_size(std::size_t n, const Vec<dim>& L, std::size_t corners)
 {
-  if (!(Lx > 0.0 && Ly > 0.0))
-    throw std::runtime_error("cell size must be positive (keyword 'cell')");
-  if (X.size() < 4)
-    throw std::runtime_error("the frame group has " + std::to_string(X.size()) +
-                             " particles; a frame needs at least the 4 corners");
+  for (int k = 0; k < dim; ++k)
+    if (!(L[k] > 0.0))
+      throw std::runtime_error("cell size must be positive (keyword 'cell')");
+  if (n < corners)
+    throw std::runtime_error("the frame group has " + std::to_string(n) +
+                             " particles; a frame needs at least the " + std::to_string(corners) +
+                             " corners");
+}
 
+/// The 2D frame: a ring counter-clockwise from the origin corner, (R1).
+FrameTopology<2> build_frame_2d(const std::vector<int>& tags, const std::vector<Vec2>& X,
+                                const std::vector<double>& radius, double Lx, double Ly, double tol)
+{
   const std::vector<int> plus_x = images_at(X, Vec2{Lx, 0.0}, tol);
   const std::vector<int> plus_y = images_at(X, Vec2{0.0, Ly}, tol);
   const int c00 = find_origin_corner(tags, X, plus_x, plus_y, Lx, Ly);
   const int c10 = plus_x[c00], c01 = plus_y[c00], c11 = plus_x[c01];
   const EdgePairs edges = pair_edge_particles(tags, X, radius, plus_x, plus_y, {c00, c10, c01, c11});
 
-  FrameTopology frame;
-  frame.Lx = Lx;
-  frame.Ly = Ly;
+  FrameTopology<2> frame;
+  frame.L = {Lx, Ly};
   frame.origin = X[c00];
   auto add = [&](int i, FrameRole r, int pair) {
-    FrameParticle p;
+    FrameParticle<2> p;
     p.tag = tags[i];
     p.X = X[i] - frame.origin;
     p.radius = radius[i];
@@ -158,41 +174,229 @@ FrameTopology build_frame_topology(const std::vector<int>& tags, const std::vect
   // The ring counterclockwise from the origin corner. Pair indices: bottom
   // pairs first, then left pairs.
   const int nb = static_cast<int>(edges.bottom.size()), nl = static_cast<int>(edges.left.size());
-  frame.pairs.assign(nb + nl, {-1, -1});
+  frame.groups.assign(nb + nl, {-1, -1});
   frame.corners[0] = add(c00, FrameRole::corner, -1);
   for (int k = 0; k < nb; ++k)
-    frame.pairs[k][0] = add(edges.bottom[k].second, FrameRole::edge_minus, k);
+    frame.groups[k][0] = add(edges.bottom[k].second, FrameRole::edge_minus, k);
   frame.corners[1] = add(c10, FrameRole::corner, -1);
   for (int k = 0; k < nl; ++k)
-    frame.pairs[nb + k][1] = add(plus_x[edges.left[k].second], FrameRole::edge_plus, nb + k);
+    frame.groups[nb + k][1] = add(plus_x[edges.left[k].second], FrameRole::edge_plus, nb + k);
   frame.corners[2] = add(c11, FrameRole::corner, -1);
   for (int k = nb - 1; k >= 0; --k)
-    frame.pairs[k][1] = add(plus_y[edges.bottom[k].second], FrameRole::edge_plus, k);
+    frame.groups[k][1] = add(plus_y[edges.bottom[k].second], FrameRole::edge_plus, k);
   frame.corners[3] = add(c01, FrameRole::corner, -1);
   for (int k = nl - 1; k >= 0; --k)
-    frame.pairs[nb + k][0] = add(edges.left[k].second, FrameRole::edge_minus, nb + k);
+    frame.groups[nb + k][0] = add(edges.left[k].second, FrameRole::edge_minus, nb + k);
 
   for (int e = 0; e < nb + nl; ++e)
-  {
-    FrameParticle& image = frame.particles[frame.pairs[e][1]];
-    if (e < nb)
-      image.image_y = true; // top member of a bottom/top pair
-    else
-      image.image_x = true; // right member of a left/right pair
-  }
-  frame.particles[frame.corners[1]].image_x = true;
-  frame.particles[frame.corners[2]].image_x = frame.particles[frame.corners[2]].image_y = true;
-  frame.particles[frame.corners[3]].image_y = true;
+    frame.particles[frame.groups[e][1]].image[e < nb ? 1 : 0] = true; // top / right member
+  frame.particles[frame.corners[1]].image = {true, false};
+  frame.particles[frame.corners[2]].image = {true, true};
+  frame.particles[frame.corners[3]].image = {false, true};
 
   set_area_vectors(frame);
   return frame;
 }
 
-Mat2 frame_deformation(const FrameTopology& frame, const std::vector<Vec2>& x_rel)
+/// 3D: the images of every frame particle along each axis, then one group
+/// per original (a particle with no image at -L_k), 2^s members.
+FrameTopology<3> build_frame_3d(const std::vector<int>& tags, const std::vector<Vec3>& X,
+                                const std::vector<double>& radius, const Vec3& L, double tol)
 {
-  Mat2 F{0.0, 0.0, 0.0, 0.0};
+  const std::size_t n = X.size();
+  std::array<std::vector<int>, 3> plus;
+  std::vector<bool> is_image(n, false);
+  for (int k = 0; k < 3; ++k)
+  {
+    Vec3 shift{};
+    shift[k] = L[k];
+    plus[k] = images_at(X, shift, tol);
+    for (std::size_t i = 0; i < n; ++i)
+      if (plus[k][i] >= 0)
+        is_image[plus[k][i]] = true;
+  }
+  const char* axis = "xyz";
+  struct Found
+  {
+    int original;
+    std::vector<int> members; ///< member b = original + sum_{bit k of b} L_k e_k (bits over all 3 axes)
+    std::array<bool, 3> cuts; ///< faces x_k = 0 it cuts
+  };
+  std::vector<Found> found;
+  std::vector<int> owner(n, -1);
+  int corner = -1;
+  for (std::size_t o = 0; o < n; ++o)
+  {
+    if (is_image[o])
+      continue;
+    Found g{static_cast<int>(o), std::vector<int>(8, -1), {}};
+    for (int k = 0; k < 3; ++k)
+      g.cuts[k] = plus[k][o] >= 0;
+    if (!g.cuts[0] && !g.cuts[1] && !g.cuts[2])
+      throw std::runtime_error("unpaired " + describe(tags[o], X[o]) +
+                               ": no periodic image at +Lx, +Ly or +Lz (and it is not the image of "
+                               "another frame particle); rebuild the frame with build_frame.py");
+    g.members[0] = static_cast<int>(o);
+    for (int b = 1; b < 8; ++b)
+    {
+      bool wanted = true;
+      for (int k = 0; k < 3; ++k)
+        wanted = wanted && (!(b >> k & 1) || g.cuts[k]);
+      if (!wanted)
+        continue;
+      int k = 0; // reach member b from member b - 2^k along the lowest set bit
+      while (!(b >> k & 1))
+        ++k;
+      const int from = g.members[b & ~(1 << k)];
+      const int to = plus[k][from];
+      if (to < 0)
+      {
+        std::ostringstream msg;
+        msg << describe(tags[o], X[o]) << " cuts the faces";
+        for (int a = 0; a < 3; ++a)
+          if (g.cuts[a])
+            msg << " " << axis[a] << " = 0";
+        msg << " but its image " << describe(tags[from], X[from]) << " has no image at +L"
+            << axis[k] << "; a frame particle needs all 2^s images; rebuild the frame with build_frame.py";
+        throw std::runtime_error(msg.str());
+      }
+      if (std::abs(radius[to] - radius[o]) > 1e-9 * radius[o])
+        throw std::runtime_error(describe(tags[o], X[o]) + " and its periodic image " +
+                                 describe(tags[to], X[to]) + " have different radii");
+      g.members[b] = to;
+    }
+    for (int m : g.members)
+      if (m >= 0)
+      {
+        if (owner[m] >= 0)
+          throw std::runtime_error(describe(tags[m], X[m]) + " is an image of two frame particles (" +
+                                   std::to_string(tags[owner[m]]) + " and " + std::to_string(tags[o]) +
+                                   "): check that 'cell' matches the packing");
+        owner[m] = static_cast<int>(o);
+      }
+    if (g.cuts[0] && g.cuts[1] && g.cuts[2])
+    {
+      if (corner >= 0)
+        throw std::runtime_error("two corner particles in the frame: " +
+                                 describe(tags[found[corner].original], X[found[corner].original]) +
+                                 " and " + describe(tags[o], X[o]) + "; check that 'cell' matches the packing");
+      corner = static_cast<int>(found.size());
+    }
+    found.push_back(g);
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    if (owner[i] < 0)
+      throw std::runtime_error(describe(tags[i], X[i]) +
+                               " is a periodic image whose original is itself an image along "
+                               "another axis only; rebuild the frame with build_frame.py");
+  if (corner < 0)
+    throw std::runtime_error("no corner particle with periodic images at +Lx, +Ly and +Lz (eight "
+                             "images) in the frame group; check 'cell " + format(L[0]) + " " +
+                             format(L[1]) + " " + format(L[2]) +
+                             "' against the packing (build it with rve_templates/build_frame.py)");
+
+  FrameTopology<3> frame;
+  frame.L = L;
+  frame.origin = X[found[corner].original];
+  auto add = [&](int i, int bits, FrameRole role, int group) {
+    FrameParticle<3> p;
+    p.tag = tags[i];
+    p.X = X[i] - frame.origin;
+    p.radius = radius[i];
+    p.role = role;
+    p.pair = group;
+    for (int k = 0; k < 3; ++k)
+      p.image[k] = bits >> k & 1;
+    frame.particles.push_back(p);
+    return static_cast<int>(frame.particles.size()) - 1;
+  };
+  for (int b = 0; b < 8; ++b)
+    frame.corners[b] = add(found[corner].members[b], b, FrameRole::corner, -1);
+  // Groups in the order of their originals' ids: independent of atom order.
+  std::vector<const Found*> order;
+  for (const Found& g : found)
+    if (&g != &found[corner])
+      order.push_back(&g);
+  std::sort(order.begin(), order.end(),
+            [&](const Found* a, const Found* b) { return tags[a->original] < tags[b->original]; });
+  std::vector<std::array<int, 8>> by_bits{frame.corners}; // frame indices of each group's images
+  for (const Found* g : order)
+  {
+    FrameTopology<3>::Group members{-1, -1, -1, -1};
+    std::array<int, 8> bits;
+    bits.fill(-1);
+    int slot = 0;
+    const int e = static_cast<int>(frame.groups.size());
+    for (int b = 0; b < 8; ++b)
+      if (g->members[b] >= 0)
+        members[slot++] = bits[b] =
+          add(g->members[b], b, b == 0 ? FrameRole::edge_minus : FrameRole::edge_plus, e);
+    frame.groups.push_back(members);
+    by_bits.push_back(bits);
+  }
+
+  // Area vectors: each face x_k = 0 shared among the images on it in
+  // proportion to their cross-section; the face x_k = L_k likewise (header).
+  const double V = frame.reference_volume();
+  for (int k = 0; k < 3; ++k)
+  {
+    Vec3 shift{};
+    shift[k] = L[k];
+    struct OnFace
+    {
+      int minus, plus; ///< frame indices on x_k = 0 and of its +L_k image
+      double weight;
+    };
+    std::vector<OnFace> on_face;
+    double total = 0.0;
+    for (const auto& g : by_bits)
+      for (int b = 0; b < 8; ++b)
+        if (!(b >> k & 1) && g[b] >= 0 && g[b | 1 << k] >= 0)
+        {
+          const FrameParticle<3>& p = frame.particles[g[b]];
+          const double w = M_PI * std::max(0.0, p.radius * p.radius - p.X[k] * p.X[k]);
+          on_face.push_back({g[b], g[b | 1 << k], w});
+          total += w;
+        }
+    if (!(total > 0.0))
+      throw std::runtime_error(std::string("no frame particle cuts the cell face ") + axis[k] +
+                               " = 0: the frame cannot carry the stress across it");
+    for (const OnFace& f : on_face)
+    {
+      const double a = V / L[k] * f.weight / total;
+      frame.particles[f.minus].area_vector[k] -= a;
+      frame.particles[f.plus].area_vector[k] += a;
+    }
+  }
+  return frame;
+}
+} // namespace
+
+template <>
+FrameTopology<2> build_frame_topology<2>(const std::vector<int>& tags, const std::vector<Vec2>& X,
+                                         const std::vector<double>& radius, const Vec2& L, double tol)
+{
+  check_frame_size<2>(X.size(), L, 4);
+  return build_frame_2d(tags, X, radius, L[0], L[1], tol);
+}
+
+template <>
+FrameTopology<3> build_frame_topology<3>(const std::vector<int>& tags, const std::vector<Vec3>& X,
+                                         const std::vector<double>& radius, const Vec3& L, double tol)
+{
+  check_frame_size<3>(X.size(), L, 8);
+  return build_frame_3d(tags, X, radius, L, tol);
+}
+
+template <int dim>
+Mat<dim> frame_deformation(const FrameTopology<dim>& frame, const std::vector<Same<Vec<dim>>>& x_rel)
+{
+  Mat<dim> F{};
   for (std::size_t q = 0; q < frame.particles.size(); ++q)
     F = F + outer(x_rel[q], frame.particles[q].area_vector);
   return (1.0 / frame.reference_volume()) * F;
 }
+
+template Mat<2> frame_deformation<2>(const FrameTopology<2>&, const std::vector<Vec<2>>&);
+template Mat<3> frame_deformation<3>(const FrameTopology<3>&, const std::vector<Vec<3>>&);
 } // namespace fe2dem

@@ -58,7 +58,7 @@ void check_servo(Checker& check)
     std::vector<double> residuals;
     int last_it = -1;
     bool first = true;
-    while (fix.status() == LAMMPS_NS::FixRveServo::running)
+    while (fix.status() == LAMMPS_NS::FixRveServo<2>::running)
     {
       rve.instance().command("run " + std::to_string(fix.check_interval()) +
                              (first ? " post no" : " pre no post no"));
@@ -71,8 +71,8 @@ void check_servo(Checker& check)
     }
     const Result& r = fix.result();
     const std::string tag = " (F12 = " + std::to_string(F[1]) + ")";
-    check.truth("converged" + tag, fix.status() == LAMMPS_NS::FixRveServo::converged,
-                LAMMPS_NS::FixRveServo::status_name(fix.status()));
+    check.truth("converged" + tag, fix.status() == LAMMPS_NS::FixRveServo<2>::converged,
+                LAMMPS_NS::FixRveServo<2>::status_name(fix.status()));
     check.less("r_a <= 1e-4" + tag, r.residual, 1e-4 * (1 + 1e-12));
     check.truth("servo iterations reported" + tag, r.servo_iterations > 0,
                 std::to_string(r.servo_iterations) + " iterations, " +
@@ -88,17 +88,17 @@ void check_servo(Checker& check)
     const auto x = fix.frame_positions();
     const auto& th = fix.frame_rotations();
     double worst = 0.0, worst_theta = 0.0;
-    for (const auto& p : frame.pairs)
+    for (const auto& p : frame.groups)
     {
       const Vec2 d = (x[p[1]] - x[p[0]]) - fe2dem::apply(F, frame.particles[p[1]].X - frame.particles[p[0]].X);
       worst = std::max(worst, norm(d));
-      worst_theta = std::max(worst_theta, std::abs(th[p[1]] - th[p[0]]));
+      worst_theta = std::max(worst_theta, std::abs(th[p[1]][0] - th[p[0]][0]));
     }
-    check.less("periodic pairs |x+ - x- - F(X+ - X-)| / L" + tag, worst / frame.Lx, 1e-13);
+    check.less("periodic pairs |x+ - x- - F(X+ - X-)| / L" + tag, worst / frame.L[0], 1e-13);
     check.near("theta+ = theta-" + tag, worst_theta, 0.0, 0.0);
     for (int k = 1; k < 4; ++k)
       worst = std::max(worst, norm(x[frame.corners[k]] - fe2dem::apply(F, frame.particles[frame.corners[k]].X)));
-    check.less("corners at F X_c" + tag, worst / frame.Lx, 1e-13);
+    check.less("corners at F X_c" + tag, worst / frame.L[0], 1e-13);
     check.less("F_check = F (R5)" + tag, rel(r.F_check, F), 1e-13);
   }
 }
@@ -268,11 +268,11 @@ void check_contact_count(Checker& check)
   lmp.file(s.template_file);
   lmp.command("velocity inner set 0 0 0");
   lmp.command("fix fe2dem_frozen inner freeze");
-  auto& fix = lmp.fix<LAMMPS_NS::FixRveServo>(s.fix_id);
+  auto& fix = lmp.fix<LAMMPS_NS::FixRveServo<2>>(s.fix_id);
   fix.set_deformation(identity2());
   lmp.command("run 1");
-  check.truth("converged at the first check", fix.status() == LAMMPS_NS::FixRveServo::converged,
-              LAMMPS_NS::FixRveServo::status_name(fix.status()));
+  check.truth("converged at the first check", fix.status() == LAMMPS_NS::FixRveServo<2>::converged,
+              LAMMPS_NS::FixRveServo<2>::status_name(fix.status()));
   auto* modify = lmp.lammps()->modify;
   // The fix's own per-contact compute (pos id force; LIGGGHTS allows one).
   LAMMPS_NS::Compute* pairs = modify->compute[modify->find_compute((s.fix_id + "_contacts").c_str())];
@@ -422,15 +422,15 @@ void check_affine_start(Checker& check)
 
 /// Root mean square of the pair imbalances |a+ + a-| over the rms contact force
 /// (mean over the pairs and the corner group, as servo_scale contact).
-double relative_imbalance(LAMMPS_NS::FixRveServo& fix)
+double relative_imbalance(LAMMPS_NS::FixRveServo<2>& fix)
 {
   double sum = 0.0;
-  for (const auto& pr : fix.frame().pairs)
+  for (const auto& pr : fix.frame().groups)
   {
     const Vec2 da = fix.frame_forces()[pr[0]] + fix.frame_forces()[pr[1]];
     sum += dot(da, da);
   }
-  return std::sqrt(sum / (fix.frame().pairs.size() + 1) / fix.result().contacts.mean_force_sq);
+  return std::sqrt(sum / (fix.frame().groups.size() + 1) / fix.result().contacts.mean_force_sq);
 }
 
 /// servo_scale contact: the servo tolerance bounds the pair imbalance as a

@@ -28,7 +28,7 @@ int main(int argc, char** argv)
   for (const auto& [k, v] : setup.variables)
     lmp.set_variable(k, v);
   lmp.file(setup.template_file);
-  auto& fix = lmp.fix<LAMMPS_NS::FixRveServo>("rve");
+  auto& fix = lmp.fix<LAMMPS_NS::FixRveServo<2>>("rve");
   lmp.command("run 0 post no");
   const int chunk = fix.check_interval();
   const double t0 = MPI_Wtime();

@@ -1,6 +1,8 @@
 // fix rve/servo: its full state in LIGGGHTS restart files, so that
 // write_restart / read_restart (and the coupler's commit, rollback and
 // migration built on them) continue a solve bit for bit.
+#pragma once
+
 #include "fix_rve_servo.h"
 
 #include "byte_stream.h"
@@ -15,22 +17,22 @@
 using namespace LAMMPS_NS;
 using namespace fe2dem;
 
-namespace
+namespace fe2dem_fix_detail
 {
 constexpr std::uint32_t state_magic = 0x46453244; // "FE2D"
 constexpr std::uint32_t state_version = 3; // 2: Result::membrane_steps; 3: image flags
-} // namespace
+} // namespace fe2dem_fix_detail
 
 // The one list of everything a restart must carry, used to write and read.
+template <int dim>
 template <class Stream>
-void FixRveServo::transfer_state(Stream& s)
+void FixRveServo<dim>::transfer_state(Stream& s)
 {
   // frame topology (the reference configuration is not the current one)
   s.io(frame_.origin);
-  s.io(frame_.Lx);
-  s.io(frame_.Ly);
+  s.io(frame_.L); // 2D: the same bytes as Lx, Ly of state version 3
   s.io(frame_.particles);
-  s.io(frame_.pairs);
+  s.io(frame_.groups);
   s.io(frame_.corners);
   s.io(r_min_);
   s.io(r_max_);
@@ -67,7 +69,8 @@ void FixRveServo::transfer_state(Stream& s)
   s.io(checks_since_contact_pass_);
 }
 
-void FixRveServo::write_restart(FILE* fp)
+template <int dim>
+void FixRveServo<dim>::write_restart(FILE* fp)
 {
   ByteWriter w;
   w.put(state_magic);
@@ -82,7 +85,8 @@ void FixRveServo::write_restart(FILE* fp)
   }
 }
 
-void FixRveServo::restart(char* buf)
+template <int dim>
+void FixRveServo<dim>::restart(char* buf)
 {
   // LIGGGHTS hands over the record without its length; the record checks
   // its own framing through the magic number and version.
@@ -93,7 +97,8 @@ void FixRveServo::restart(char* buf)
   if (magic != state_magic || version != state_version)
     error->fix_error(FLERR, this, "restart data is not from this version of fix rve/servo");
   transfer_state(r);
-  if (std::abs(frame_.Lx - Lx_) > 1e-12 * Lx_ || std::abs(frame_.Ly - Ly_) > 1e-12 * Ly_)
-    error->fix_error(FLERR, this, "keyword 'cell' differs from the cell in the restart data");
+  for (int k = 0; k < dim; ++k)
+    if (std::abs(frame_.L[k] - L_[k]) > 1e-12 * L_[k])
+      error->fix_error(FLERR, this, "keyword 'cell' differs from the cell in the restart data");
   restored_ = true;
 }

@@ -1,5 +1,7 @@
 // fix rve/servo: the servo state machine of physics.md §2.5 and the
 // homogenised results of §2.3/§2.6, evaluated every check_every steps.
+#pragma once
+
 #include "fix_rve_servo.h"
 
 #include "atom.h"
@@ -15,18 +17,19 @@
 using namespace LAMMPS_NS;
 using namespace fe2dem;
 
-void FixRveServo::begin_solve(const Mat2* F)
+template <int dim>
+void FixRveServo<dim>::begin_solve(const Tensor* F)
 {
-  const Mat2 F_before = F_;
+  const Tensor F_before = F_;
   F_ = F ? checked_deformation(*F) : evaluate_deformation();
   membrane_stale_ = true; // its candidate search depends on F
   if (!keep_fluctuations_)
   {
     for (auto& w : w_)
-      w = {0.0, 0.0};
+      w = Vector{};
     for (auto& t : theta_pair_)
-      t = 0.0;
-    theta_corner_ = 0.0;
+      t = Rotation{};
+    theta_corner_ = Rotation{};
   }
   status_ = running;
   failure_reason_.clear();
@@ -41,27 +44,33 @@ void FixRveServo::begin_solve(const Mat2* F)
   // inner_start affine: the inner particles get the velocity field of the
   // affine motion F_before -> F while the frame moves (see initial_integrate).
   // (The time step may not be known yet: the first solve can begin before init().)
-  affine_step_ = Mat2{0.0, 0.0, 0.0, 0.0};
+  affine_step_ = Tensor{};
   if (affine_inner_ && F_ != F_before)
     affine_step_ = (1.0 / move_steps_) * matmul(F_ - F_before, fe2dem::inverse(F_before));
 }
 
-// Targets (R2, R3): x_q = F X_q + w_e for both members of pair e, corners
-// exactly at F X_c; one rotation per pair and one for all corners.
-void FixRveServo::schedule_frame_move()
+// Targets (R2, R3): x_q = F X_q + w_e for every member of group e, corners
+// exactly at F X_c; one rotation per group and one for all corners.
+template <int dim>
+void FixRveServo<dim>::schedule_frame_move()
 {
   const std::size_t nq = frame_.particles.size();
   move_start_ = frame_positions();
   move_target_.resize(nq);
   rot_start_ = theta_frame_;
   rot_target_.resize(nq);
-  // Frame particles turn with the rigid rotation of F (2D polar angle) plus
-  // the servo's rotation, so that a rigid rotation leaves contacts unsheared.
-  const double theta_F = std::atan2(F_[2] - F_[1], F_[0] + F_[3]);
+  // Frame particles turn with the rigid rotation of F (2D polar angle, 3D
+  // rotation vector of the polar rotation) plus the servo's rotation, so
+  // that a rigid rotation leaves contacts unsheared.
+  Rotation theta_F;
+  if constexpr (dim == 2)
+    theta_F = {{std::atan2(F_[2] - F_[1], F_[0] + F_[3])}};
+  else
+    theta_F = fe2dem::rotation_vector(fe2dem::polar_rotation(F_));
   double largest = 0.0;
   for (std::size_t q = 0; q < nq; ++q)
   {
-    const fe2dem::FrameParticle& p = frame_.particles[q];
+    const fe2dem::FrameParticle<dim>& p = frame_.particles[q];
     move_target_[q] = fe2dem::apply(F_, p.X);
     rot_target_[q] = theta_F + theta_corner_;
     if (p.pair >= 0)
@@ -70,14 +79,15 @@ void FixRveServo::schedule_frame_move()
       rot_target_[q] = theta_F + theta_pair_[p.pair];
     }
     largest = std::max(largest, fe2dem::norm(move_target_[q] - move_start_[q]));
-    largest = std::max(largest, std::abs(rot_target_[q] - rot_start_[q]) * p.radius);
+    largest = std::max(largest, fe2dem::spin_norm(rot_target_[q] - rot_start_[q]) * p.radius);
   }
   move_steps_ = std::max(1, static_cast<int>(std::ceil(largest / (move_rate_ * r_min_))));
   move_done_ = 0;
-  affine_step_ = Mat2{0.0, 0.0, 0.0, 0.0}; // servo moves are not affine (begin_solve sets it)
+  affine_step_ = Tensor{}; // servo moves are not affine (begin_solve sets it)
 }
 
-void FixRveServo::end_of_step()
+template <int dim>
+void FixRveServo<dim>::end_of_step()
 {
   if (status_ != running)
     return;
@@ -108,10 +118,11 @@ void FixRveServo::end_of_step()
 // refreshed every `refresh_checks` relaxed checks; the servo residual needs
 // only the frame forces and is always current. Convergence is only
 // declared on fresh values.
-void FixRveServo::servo_check(double ekin)
+template <int dim>
+void FixRveServo<dim>::servo_check(double ekin)
 {
   const int refresh_checks = 10;
-  auto relaxed_with = [&](const ContactStatistics& c) {
+  auto relaxed_with = [&](const ContactStatistics<dim>& c) {
     if (criterion_unbalanced_)
       return c.mean_force_sq > 0.0 &&
              unbalanced_sq_sum_ / std::max(n_inner_, 1) <= relax_tol_ * relax_tol_ * c.mean_force_sq;
@@ -146,7 +157,8 @@ void FixRveServo::servo_check(double ekin)
     apply_servo_correction();
 }
 
-void FixRveServo::fail(Status s, const std::string& reason)
+template <int dim>
+void FixRveServo<dim>::fail(Status s, const std::string& reason)
 {
   status_ = s;
   failure_reason_ = reason;
@@ -158,7 +170,8 @@ void FixRveServo::fail(Status s, const std::string& reason)
   }
 }
 
-void FixRveServo::collect_contacts()
+template <int dim>
+void FixRveServo<dim>::collect_contacts()
 {
   contacts_compute_->compute_local();
   const int rows = contacts_compute_->size_local_rows;
@@ -167,19 +180,20 @@ void FixRveServo::collect_contacts()
   for (int r = 0; r < rows; ++r)
   {
     // columns: pos (xi, xj), id (i, j, periodic flag), force on i
-    fe2dem::Contact& c = contacts_[r];
+    fe2dem::Contact<dim>& c = contacts_[r];
     const int ti = static_cast<int>(a[r][6]), tj = static_cast<int>(a[r][7]);
     c.i = tag_to_dense_[ti];
     c.j = tag_to_dense_[tj];
-    c.xi = {a[r][0], a[r][1]};
-    c.xj = {a[r][3], a[r][4]};
+    c.xi = first<dim>(&a[r][0]);
+    c.xj = first<dim>(&a[r][3]);
     c.ri = atom->radius[local_index(ti)];
     c.rj = atom->radius[local_index(tj)];
-    c.force_on_i = {a[r][9], a[r][10]};
+    c.force_on_i = first<dim>(&a[r][9]);
   }
 }
 
-double FixRveServo::check_particles()
+template <int dim>
+double FixRveServo<dim>::check_particles()
 {
   double** x = atom->x;
   double** v = atom->v;
@@ -187,7 +201,7 @@ double FixRveServo::check_particles()
   const int* mask = atom->mask;
 
   // Kinetic energy, escape and blow-up checks over inner particles.
-  const Mat2 Finv = fe2dem::inverse(F_);
+  const Tensor Finv = fe2dem::inverse(F_);
   const double margin = 2.0 * r_max_;
   double ekin = 0.0, max_omega = 0.0;
   n_inner_ = 0;
@@ -196,31 +210,54 @@ double FixRveServo::check_particles()
     if (mask[i] & frame_groupbit_)
       continue;
     ++n_inner_;
-    if (!std::isfinite(x[i][0] + x[i][1] + v[i][0] + v[i][1] + omega[i][2] + atom->f[i][0] +
-                       atom->f[i][1]))
+    double any = 0.0; // non-finite if any of them is
+    for (int k = 0; k < dim; ++k)
+      any += x[i][k] + v[i][k] + atom->f[i][k];
+    for (int c = 0; c < n_spin; ++c)
+      any += omega[i][spin_index<dim>(c)];
+    if (!std::isfinite(any))
     {
       fail(blown_up, "particle id " + std::to_string(atom->tag[i]) +
                          " has a non-finite position, velocity or force");
       return 0.0;
     }
-    const Vec2 xi = fe2dem::apply(Finv, Vec2{x[i][0], x[i][1]} - frame_.origin);
-    if (xi[0] < -margin || xi[0] > Lx_ + margin || xi[1] < -margin || xi[1] > Ly_ + margin)
+    const Vector xi = fe2dem::apply(Finv, first<dim>(x[i]) - frame_.origin);
+    bool outside = false;
+    for (int k = 0; k < dim; ++k)
+      outside = outside || xi[k] < -margin || xi[k] > L_[k] + margin;
+    if (outside)
     {
       std::ostringstream msg;
-      msg << "inner particle id " << atom->tag[i] << " left the frame: at (" << x[i][0] << ", "
-          << x[i][1] << "), reference-cell coordinates (" << xi[0] << ", " << xi[1] << ")";
+      msg << "inner particle id " << atom->tag[i] << " left the frame: at (";
+      for (int k = 0; k < dim; ++k)
+        msg << (k ? ", " : "") << x[i][k];
+      msg << "), reference-cell coordinates (";
+      for (int k = 0; k < dim; ++k)
+        msg << (k ? ", " : "") << xi[k];
+      msg << ")";
       fail(escaped, msg.str());
       return 0.0;
     }
-    ekin += 0.5 * atom->rmass[i] * (v[i][0] * v[i][0] + v[i][1] * v[i][1]) +
-            0.5 * inertia_of(i) * omega[i][2] * omega[i][2];
-    max_omega = std::max(max_omega, std::abs(omega[i][2]));
+    const Vector vi = first<dim>(v[i]);
+    if constexpr (dim == 2)
+    {
+      ekin += 0.5 * atom->rmass[i] * fe2dem::dot(vi, vi) +
+              0.5 * inertia_of(i) * omega[i][2] * omega[i][2];
+      max_omega = std::max(max_omega, std::abs(omega[i][2]));
+    }
+    else
+    {
+      const Vector wi = first<dim>(omega[i]);
+      ekin += 0.5 * atom->rmass[i] * fe2dem::dot(vi, vi) + 0.5 * inertia_of(i) * fe2dem::dot(wi, wi);
+      max_omega = std::max(max_omega, fe2dem::norm(wi));
+    }
   }
   result_.max_inner_omega = max_omega;
   return ekin;
 }
 
-void FixRveServo::homogenise(double ekin)
+template <int dim>
+void FixRveServo<dim>::homogenise(double ekin)
 {
   checks_since_contact_pass_ = 0;
   Result& r = result_;
@@ -243,13 +280,14 @@ void FixRveServo::homogenise(double ekin)
     fail(overlapped, describe_largest_overlap());
 }
 
-std::string FixRveServo::describe_largest_overlap() const
+template <int dim>
+std::string FixRveServo<dim>::describe_largest_overlap() const
 {
   double worst = -1.0;
-  const fe2dem::Contact* c = nullptr;
-  for (const fe2dem::Contact& k : contacts_)
+  const fe2dem::Contact<dim>* c = nullptr;
+  for (const fe2dem::Contact<dim>& k : contacts_)
   {
-    const double d = std::hypot(k.xj[0] - k.xi[0], k.xj[1] - k.xi[1]);
+    const double d = distance<dim>(k.xj.data(), k.xi.data());
     const double rel = (k.ri + k.rj - d) / std::min(k.ri, k.rj);
     if (rel > worst)
       worst = rel, c = &k;
@@ -276,7 +314,8 @@ std::string FixRveServo::describe_largest_overlap() const
 // scale M R/dt^2 is about 4e4 N for the [LBS] discs, so r_a <= 1e-4 allows a
 // pair about 4 N of imbalance whatever the pressure; the contact scale
 // bounds it as a fraction of a typical contact force.
-double FixRveServo::servo_residual() const
+template <int dim>
+double FixRveServo<dim>::servo_residual() const
 {
   const double dt2 = dtv_ * dtv_;
   const double f_rms = std::sqrt(result_.contacts.mean_force_sq);
@@ -285,65 +324,78 @@ double FixRveServo::servo_residual() const
     return servo_scale_contact_ ? std::make_pair(f_rms, f_rms * R) : std::make_pair(M * R / dt2, M * R * R / dt2);
   };
   double sum = 0.0;
-  for (const auto& pr : frame_.pairs)
+  for (const auto& g : frame_.groups)
   {
-    const auto [a_scale, m_scale] = scales(local_index(frame_.particles[pr[0]].tag));
-    const Vec2 da = frame_force_[pr[0]] + frame_force_[pr[1]];
-    const double dm = frame_moment_[pr[0]] + frame_moment_[pr[1]];
-    sum += fe2dem::dot(da, da) / (a_scale * a_scale) + (dm / m_scale) * (dm / m_scale);
+    const auto [a_scale, m_scale] = scales(local_index(frame_.particles[g[0]].tag));
+    const Vector da = group_sum(frame_force_, g);
+    const Rotation dm = group_sum(frame_moment_, g);
+    double moments = (dm[0] / m_scale) * (dm[0] / m_scale);
+    for (int c = 1; c < n_spin; ++c)
+      moments += (dm[c] / m_scale) * (dm[c] / m_scale);
+    sum += fe2dem::dot(da, da) / (a_scale * a_scale) + moments;
   }
-  double dmc = 0.0;
+  Rotation dmc{};
   for (int k : frame_.corners)
-    dmc += frame_moment_[k];
-  sum += std::pow(dmc / scales(local_index(frame_.particles[frame_.corners[0]].tag)).second, 2);
+    dmc = dmc + frame_moment_[k];
+  const double mc_scale = scales(local_index(frame_.particles[frame_.corners[0]].tag)).second;
+  for (int c = 0; c < n_spin; ++c)
+    sum += std::pow(dmc[c] / mc_scale, 2);
   if (!servo_scale_contact_)
     return std::sqrt(sum);
   if (!(f_rms > 0.0))
     return std::numeric_limits<double>::infinity(); // no contact force to compare with yet
-  return std::sqrt(sum / static_cast<double>(frame_.pairs.size() + 1));
+  return std::sqrt(sum / static_cast<double>(frame_.groups.size() + 1));
 }
 
-// Step 4 of the servo: move each pair along its net contact force (and
+// Step 4 of the servo: move each group along its net contact force (and
 // rotate along its net contact moment), i.e. against the residual a_+ + a_-
-// of (R4). Moving along the net contact force is the stable direction.
+// of (R4) (3D edge groups: the sum over four images). Moving along the net
+// contact force is the stable direction.
 //
 // The fixed gain g_a = gain_a dt^2/M overshoots for a pair held by many
 // stiff contacts (measured: a period-2 oscillation of a_+ + a_- at
 // constant amplitude). Each pair therefore scales its gain by a factor in
 // (0, 1] that halves whenever its residual changes sign and recovers by
 // 20 % per iteration otherwise, per force component and for the moment.
-void FixRveServo::apply_servo_correction()
+template <int dim>
+void FixRveServo<dim>::apply_servo_correction()
 {
   const double dt2 = dtv_ * dtv_;
   auto adapt = [](double& factor, double now, double before) {
     factor = now * before < 0.0 ? 0.5 * factor : std::min(1.0, 1.2 * factor);
   };
-  for (std::size_t e = 0; e < frame_.pairs.size(); ++e)
+  for (std::size_t e = 0; e < frame_.groups.size(); ++e)
   {
-    const auto& pr = frame_.pairs[e];
-    const int i = local_index(frame_.particles[pr[0]].tag);
+    const auto& g = frame_.groups[e];
+    const int i = local_index(frame_.particles[g[0]].tag);
     const double M = atom->rmass[i], R = atom->radius[i];
-    const Vec2 da = frame_force_[pr[0]] + frame_force_[pr[1]];
-    const double dm = frame_moment_[pr[0]] + frame_moment_[pr[1]];
+    const Vector da = group_sum(frame_force_, g);
+    const Rotation dm = group_sum(frame_moment_, g);
     ServoMemory& mem = servo_memory_[e];
-    for (int k = 0; k < 2; ++k)
+    for (int k = 0; k < dim; ++k)
     {
       adapt(mem.force_factor[k], da[k], mem.last_da[k]);
       w_[e][k] -= mem.force_factor[k] * gain_a_ * dt2 / M * da[k];
     }
-    adapt(mem.moment_factor, dm, mem.last_dm);
-    theta_pair_[e] -= mem.moment_factor * gain_m_ * dt2 / (M * R * R) * dm;
+    for (int c = 0; c < n_spin; ++c)
+    {
+      adapt(mem.moment_factor[c], dm[c], mem.last_dm[c]);
+      theta_pair_[e][c] -= mem.moment_factor[c] * gain_m_ * dt2 / (M * R * R) * dm[c];
+    }
     mem.last_da = da;
     mem.last_dm = dm;
   }
-  const int c = local_index(frame_.particles[frame_.corners[0]].tag);
-  double dmc = 0.0;
+  const int ic = local_index(frame_.particles[frame_.corners[0]].tag);
+  Rotation dmc{};
   for (int k : frame_.corners)
-    dmc += frame_moment_[k];
+    dmc = dmc + frame_moment_[k];
   ServoMemory& mc = servo_memory_corner_;
-  adapt(mc.moment_factor, dmc, mc.last_dm);
-  theta_corner_ -=
-    mc.moment_factor * gain_m_ * dt2 / (atom->rmass[c] * std::pow(atom->radius[c], 2)) * dmc;
+  for (int c = 0; c < n_spin; ++c)
+  {
+    adapt(mc.moment_factor[c], dmc[c], mc.last_dm[c]);
+    theta_corner_[c] -= mc.moment_factor[c] * gain_m_ * dt2 /
+                        (atom->rmass[ic] * std::pow(atom->radius[ic], 2)) * dmc[c];
+  }
   mc.last_dm = dmc;
   ++result_.servo_iterations;
   schedule_frame_move();

@@ -1,4 +1,6 @@
 // fix rve/servo: keywords, deformation input and the checks run from init().
+#pragma once
+
 #include "fix_rve_servo.h"
 
 #include "atom.h"
@@ -20,24 +22,26 @@
 using namespace LAMMPS_NS;
 using namespace fe2dem;
 
-namespace
+namespace fe2dem_fix_detail
 {
-bool parse_double(const char* s, double& out)
+inline bool parse_double(const char* s, double& out)
 {
   char* end = nullptr;
   out = std::strtod(s, &end);
   return end != s && *end == '\0' && std::isfinite(out);
 }
 
-std::string format(double v)
+inline std::string format(double v)
 {
   std::ostringstream s;
   s << v;
   return s.str();
 }
-} // namespace
+} // namespace fe2dem_fix_detail
+using namespace fe2dem_fix_detail;
 
-void FixRveServo::parse_arguments(int narg, char** arg)
+template <int dim>
+void FixRveServo<dim>::parse_arguments(int narg, char** arg)
 {
   auto number = [&](const char* keyword, const char* value, double lo, bool lo_open) {
     double v = 0.0;
@@ -78,12 +82,12 @@ void FixRveServo::parse_arguments(int narg, char** arg)
                  frame_groupbit_ = group->bitmask[ig];
                  have_frame = true;
                }}},
-    {"cell", {2, [&](const char* kw, char** v) {
-                Lx_ = number(kw, v[0], 0.0, true);
-                Ly_ = number(kw, v[1], 0.0, true);
+    {"cell", {dim, [&](const char* kw, char** v) {
+                for (int k = 0; k < dim; ++k)
+                  L_[k] = number(kw, v[k], 0.0, true);
                 have_cell = true;
               }}},
-    {"F", {4, [&](const char*, char** v) { parse_deformation(v, "keyword 'F'"); }}},
+    {"F", {n_tensor, [&](const char*, char** v) { parse_deformation(v, "keyword 'F'"); }}},
     {"damping", {2, [&](const char* kw, char** v) {
                    alpha_ = number(kw, v[0], 0.0, false);
                    beta_ = number(kw, v[1], 0.0, false);
@@ -93,6 +97,9 @@ void FixRveServo::parse_arguments(int narg, char** arg)
     {"rotation", {1, [&](const char* kw, char** v) { lock_rotation_ = !choice(kw, v[0], "free", "locked"); }}},
     {"inertia", {1, [&](const char* kw, char** v) {
                    inertia_factor_ = choice(kw, v[0], "disc", "sphere") ? 0.5 : 0.4;
+                   if (dim == 3 && inertia_factor_ != 0.4)
+                     error->fix_error(FLERR, this, "keyword 'inertia': 'disc' is 2D only; 3D "
+                                                   "particles are spheres (inertia sphere)");
                  }}},
     {"gains", {2, [&](const char* kw, char** v) {
                  gain_a_ = number(kw, v[0], 0.0, true);
@@ -117,7 +124,13 @@ void FixRveServo::parse_arguments(int narg, char** arg)
     {"move_rate", {1, [&](const char* kw, char** v) { move_rate_ = number(kw, v[0], 0.0, true); }}},
     {"on_failure", {1, [&](const char* kw, char** v) { error_on_failure_ = choice(kw, v[0], "error", "flag"); }}},
     {"max_overlap", {1, [&](const char* kw, char** v) { max_overlap_ = number(kw, v[0], 0.0, true); }}},
-    {"membrane", {1, [&](const char* kw, char** v) { membrane_on_ = choice(kw, v[0], "yes", "no"); }}},
+    {"membrane", {1, [&](const char* kw, char** v) {
+                    membrane_on_ = choice(kw, v[0], "yes", "no");
+                    if (dim == 3 && membrane_on_)
+                      error->fix_error(FLERR, this, "keyword 'membrane yes' is 2D only; in 3D "
+                                                    "use 'membrane no' (escapes stop the solve with "
+                                                    "status escaped)");
+                  }}},
   };
 
   for (int iarg = 3; iarg < narg;)
@@ -142,12 +155,14 @@ void FixRveServo::parse_arguments(int narg, char** arg)
   if (!have_frame)
     error->fix_error(FLERR, this, "keyword 'frame GROUP' is required (the boundary particles)");
   if (!have_cell)
-    error->fix_error(FLERR, this, "keyword 'cell Lx Ly' is required (reference cell size)");
+    error->fix_error(FLERR, this, dim == 2 ? "keyword 'cell Lx Ly' is required (reference cell size)"
+                                           : "keyword 'cell Lx Ly Lz' is required (reference cell size)");
 }
 
-void FixRveServo::parse_deformation(char** arg, const char* where)
+template <int dim>
+void FixRveServo<dim>::parse_deformation(char** arg, const char* where)
 {
-  for (int k = 0; k < 4; ++k)
+  for (int k = 0; k < n_tensor; ++k)
   {
     double v;
     if (std::strncmp(arg[k], "v_", 2) != 0 && !parse_double(arg[k], v))
@@ -160,10 +175,11 @@ void FixRveServo::parse_deformation(char** arg, const char* where)
   }
 }
 
-Mat2 FixRveServo::evaluate_deformation()
+template <int dim>
+typename FixRveServo<dim>::Tensor FixRveServo<dim>::evaluate_deformation()
 {
-  Mat2 F{};
-  for (int k = 0; k < 4; ++k)
+  Tensor F{};
+  for (int k = 0; k < n_tensor; ++k)
   {
     const std::string& s = F_input_[k];
     if (s.compare(0, 2, "v_") == 0)
@@ -183,19 +199,31 @@ Mat2 FixRveServo::evaluate_deformation()
   return checked_deformation(F);
 }
 
-Mat2 FixRveServo::checked_deformation(const Mat2& F)
+template <int dim>
+typename FixRveServo<dim>::Tensor FixRveServo<dim>::checked_deformation(const Tensor& F)
 {
-  if (!(fe2dem::det(F) > 0.0))
+  bool finite = true;
+  for (double f : F)
+    finite = finite && std::isfinite(f);
+  if (!finite || !(fe2dem::det(F) > 0.0))
   {
     std::ostringstream msg;
-    msg << "keyword 'F': det F = " << fe2dem::det(F) << " must be > 0 (F = " << F[0] << " "
-        << F[1] << " " << F[2] << " " << F[3] << ")";
+    msg << "keyword 'F': ";
+    if (finite)
+      msg << "det F = " << fe2dem::det(F) << " must be > 0";
+    else
+      msg << "every component must be finite";
+    msg << " (F =";
+    for (double f : F)
+      msg << " " << f;
+    msg << ")";
     error->fix_error(FLERR, this, msg.str().c_str());
   }
   return F;
 }
 
-void FixRveServo::lookup_contact_law()
+template <int dim>
+void FixRveServo<dim>::lookup_contact_law()
 {
   const int nt = atom->ntypes;
   auto value = [&](const char* name) {
@@ -208,7 +236,8 @@ void FixRveServo::lookup_contact_law()
   law_.friction = value("coefficientFriction");
 }
 
-void FixRveServo::error_checks()
+template <int dim>
+void FixRveServo<dim>::error_checks()
 {
   if (force->pair == nullptr || force->pair_match("gran", 0) == nullptr)
     error->fix_error(FLERR, this, "requires a granular pair style (pair_style gran ...)");

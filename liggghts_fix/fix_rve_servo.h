@@ -226,7 +226,10 @@ private:
   // --- servo state machine ----------------------------------------------
   /// Starts a solve under @p F, or under keyword F's values if null.
   void begin_solve(const Tensor* F = nullptr);
-  void schedule_frame_move();
+  /// Targets of the frame for F_ after the frame was at @p F_from (servo moves: F_).
+  void schedule_frame_move(const Tensor& F_from);
+  /// Rotation of the polar decomposition of F: 2D angle, 3D rotation vector (< pi).
+  static Rotation rotation_of(const Tensor& F);
   /// Kinetic energy of the inner particles; flags escape and blow-up.
   double check_particles();
   /// Contacts, stresses, statistics and servo residual into result_.
@@ -264,6 +267,10 @@ private:
   void half_kick_inner(bool drift);
   /// inner_start affine: adds / removes the affine velocity of the inner particles.
   void add_affine_velocity();
+  /// Velocity gradient of the frame's affine path over the next step of a move.
+  Tensor affine_velocity_gradient() const;
+  /// F on the current move's path at s in [0, 1] (2D: linear; 3D: fe2dem::polar_path).
+  Tensor path_F(double s) const;
   void remove_affine_velocity();
 
   // --- frame membrane (fix_rve_servo_membrane.cpp) --------------------------
@@ -363,6 +370,7 @@ private:
   std::vector<Vector> move_start_, move_target_;
   std::vector<Rotation> rot_start_, rot_target_;
   int move_steps_ = 0, move_done_ = 0;
+  Tensor move_F_from_ = fe2dem::identity<dim>(); ///< F where the current move started (3D restart state)
   Tensor affine_step_{};               ///< L dt of inner_start affine during the current move
   std::vector<Vector> affine_velocity_; ///< per local index, added this step
   Rotation affine_spin_{};

@@ -341,23 +341,68 @@ void FixRveServo<dim>::initial_integrate(int)
     ++move_done_;
   const double s = moving ? static_cast<double>(move_done_) / move_steps_ : 0.0;
   const double inv_t = moving ? 1.0 / (move_steps_ * dtv_) : 0.0;
+  // 3D: the frame follows the polar path F(s) (fe2dem::polar_path) plus its
+  // fluctuations interpolated linearly, and turns with the path's rotation
+  // plus the servo rotation interpolated linearly,
+  //   theta(s) = theta_F(F(s)) + theta_g(s).
+  // Along this path a rigid rotation about any axis stays rigid and the
+  // frame spins with the affine motion, so the frame-inner contacts see no
+  // relative motion on the way; LIGGGHTS' tangential history (projected
+  // onto the turning tangent plane, not rotated with it) would not forget
+  // one. 2D keeps the linear path and the constant spin (and its bits):
+  // there every rotation has the axis e3 and the linear path of a rotation
+  // is a rotation with a uniform scaling.
+  Tensor F_path = F_;
+  Rotation along_path{}, rot_from{}, rot_to{};
+  if constexpr (dim == 3)
+    if (moving && move_done_ < move_steps_)
+    {
+      F_path = path_F(s);
+      along_path = rotation_of(F_path);
+      rot_from = rotation_of(move_F_from_);
+      rot_to = rotation_of(F_);
+    }
   // frame_local_ was refreshed in the last post_force (after any atom sort).
   for (std::size_t q = 0; q < frame_.particles.size(); ++q)
   {
     const int i = frame_local_[q];
     if (moving)
     {
-      const Vector d = move_target_[q] - move_start_[q];
-      const Vector xq = move_done_ == move_steps_ ? move_target_[q] : move_start_[q] + s * d;
-      for (int k = 0; k < dim; ++k)
+      if constexpr (dim == 2)
       {
-        x[i][k] = frame_.origin[k] + xq[k];
-        v[i][k] = d[k] * inv_t;
+        const Vector d = move_target_[q] - move_start_[q];
+        const Vector xq = move_done_ == move_steps_ ? move_target_[q] : move_start_[q] + s * d;
+        for (int k = 0; k < dim; ++k)
+        {
+          x[i][k] = frame_.origin[k] + xq[k];
+          v[i][k] = d[k] * inv_t;
+        }
+        const Rotation dth = rot_target_[q] - rot_start_[q];
+        omega[i][2] = dth[0] * inv_t;
+        theta_frame_[q] = move_done_ == move_steps_ ? rot_target_[q] : rot_start_[q] + s * dth;
       }
-      const Rotation dth = rot_target_[q] - rot_start_[q];
-      for (std::size_t c = 0; c < dth.size(); ++c)
-        omega[i][spin_index<dim>(c)] = dth[c] * inv_t;
-      theta_frame_[q] = move_done_ == move_steps_ ? rot_target_[q] : rot_start_[q] + s * dth;
+      else
+      {
+        const Vector X = frame_.particles[q].X;
+        const Vector w0 = move_start_[q] - fe2dem::apply(move_F_from_, X);
+        const Vector w1 = move_target_[q] - fe2dem::apply(F_, X);
+        const Vector xq = move_done_ == move_steps_
+                            ? move_target_[q]
+                            : fe2dem::apply(F_path, X) + (1.0 - s) * w0 + s * w1;
+        for (int k = 0; k < dim; ++k)
+        {
+          v[i][k] = (xq[k] - (x[i][k] - frame_.origin[k])) / dtv_;
+          x[i][k] = frame_.origin[k] + xq[k];
+        }
+        const Rotation next =
+          move_done_ == move_steps_
+            ? rot_target_[q]
+            : along_path + (rot_start_[q] - rot_from) +
+                s * ((rot_target_[q] - rot_to) - (rot_start_[q] - rot_from));
+        for (int c = 0; c < n_spin; ++c)
+          omega[i][c] = (next[c] - theta_frame_[q][c]) / dtv_;
+        theta_frame_[q] = next;
+      }
     }
     else
     {
@@ -425,10 +470,8 @@ void FixRveServo<dim>::add_affine_velocity()
   double** x = atom->x;
   double** v = atom->v;
   double** omega = atom->omega;
-  // The frame follows x(s) = (I + s D) x0 linearly in s = k/n (schedule_frame_move);
-  // L_k = (D/n) (I + (k/n) D)^-1 / dt moves a point of that path exactly onto it.
-  const Tensor L = (1.0 / dtv_) *
-                 matmul(affine_step_, fe2dem::inverse(fe2dem::identity<dim>() + move_done_ * affine_step_));
+
+  const Tensor L = affine_velocity_gradient();
   const Rotation spin = fe2dem::axial_spin(L);
   affine_velocity_.assign(atom->nlocal, Vector{});
   for (int i = 0; i < atom->nlocal; ++i)
@@ -444,6 +487,33 @@ void FixRveServo<dim>::add_affine_velocity()
         omega[i][spin_index<dim>(c)] += spin[c];
   }
   affine_spin_ = lock_rotation_ ? Rotation{} : spin;
+}
+
+// The velocity gradient that moves a point of the frame's path from step
+// k = move_done_ to k + 1 exactly onto it. 2D: the path x(s) = (I + s D) x0,
+// linear in s = k/n, so L_k = (D/n) (I + (k/n) D)^-1 / dt. 3D: the polar
+// path F(s) (fe2dem::polar_path), L_k = (F(s_k+1) - F(s_k)) F(s_k)^-1 / dt.
+template <int dim>
+typename FixRveServo<dim>::Tensor FixRveServo<dim>::affine_velocity_gradient() const
+{
+  if constexpr (dim == 2)
+    return (1.0 / dtv_) *
+           matmul(affine_step_, fe2dem::inverse(fe2dem::identity<dim>() + move_done_ * affine_step_));
+  else
+  {
+    const Tensor F0 = path_F(static_cast<double>(move_done_) / move_steps_);
+    const Tensor F1 = path_F(static_cast<double>(move_done_ + 1) / move_steps_);
+    return (1.0 / dtv_) * matmul(F1 - F0, fe2dem::inverse(F0));
+  }
+}
+
+template <int dim>
+typename FixRveServo<dim>::Tensor FixRveServo<dim>::path_F(double s) const
+{
+  if constexpr (dim == 3)
+    return s >= 1.0 ? F_ : fe2dem::polar_path(move_F_from_, F_, s);
+  else
+    return move_F_from_ + s * (F_ - move_F_from_);
 }
 
 template <int dim>

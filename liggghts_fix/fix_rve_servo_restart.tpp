@@ -55,6 +55,8 @@ void FixRveServo<dim>::transfer_state(Stream& s)
   s.io(move_steps_);
   s.io(move_done_);
   s.io(affine_step_);
+  if constexpr (dim == 3)
+    s.io(move_F_from_); // 2D records are unchanged (state version 3)
   // solve state and last results
   s.io(frame_force_);
   s.io(frame_moment_);

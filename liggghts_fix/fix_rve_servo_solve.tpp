@@ -40,7 +40,7 @@ void FixRveServo<dim>::begin_solve(const Tensor* F)
   result_.residual = std::numeric_limits<double>::infinity(); // not evaluated yet
   checks_since_contact_pass_ = 1 << 30; // first relaxed check of a solve: fresh contact pass
   solve_pending_ = false;
-  schedule_frame_move();
+  schedule_frame_move(F_before);
   // inner_start affine: the inner particles get the velocity field of the
   // affine motion F_before -> F while the frame moves (see initial_integrate).
   // (The time step may not be known yet: the first solve can begin before init().)
@@ -52,8 +52,9 @@ void FixRveServo<dim>::begin_solve(const Tensor* F)
 // Targets (R2, R3): x_q = F X_q + w_e for every member of group e, corners
 // exactly at F X_c; one rotation per group and one for all corners.
 template <int dim>
-void FixRveServo<dim>::schedule_frame_move()
+void FixRveServo<dim>::schedule_frame_move(const Tensor& F_from)
 {
+  move_F_from_ = F_from;
   const std::size_t nq = frame_.particles.size();
   move_start_ = frame_positions();
   move_target_.resize(nq);
@@ -62,11 +63,7 @@ void FixRveServo<dim>::schedule_frame_move()
   // Frame particles turn with the rigid rotation of F (2D polar angle, 3D
   // rotation vector of the polar rotation) plus the servo's rotation, so
   // that a rigid rotation leaves contacts unsheared.
-  Rotation theta_F;
-  if constexpr (dim == 2)
-    theta_F = {{std::atan2(F_[2] - F_[1], F_[0] + F_[3])}};
-  else
-    theta_F = fe2dem::rotation_vector(fe2dem::polar_rotation(F_));
+  const Rotation theta_F = rotation_of(F_);
   double largest = 0.0;
   for (std::size_t q = 0; q < nq; ++q)
   {
@@ -347,6 +344,15 @@ double FixRveServo<dim>::servo_residual() const
   return std::sqrt(sum / static_cast<double>(frame_.groups.size() + 1));
 }
 
+template <int dim>
+typename FixRveServo<dim>::Rotation FixRveServo<dim>::rotation_of(const Tensor& F)
+{
+  if constexpr (dim == 2)
+    return {{std::atan2(F[2] - F[1], F[0] + F[3])}};
+  else
+    return fe2dem::rotation_vector(fe2dem::polar_rotation(F));
+}
+
 // Step 4 of the servo: move each group along its net contact force (and
 // rotate along its net contact moment), i.e. against the residual a_+ + a_-
 // of (R4) (3D edge groups: the sum over four images). Moving along the net
@@ -398,5 +404,5 @@ void FixRveServo<dim>::apply_servo_correction()
   }
   mc.last_dm = dmc;
   ++result_.servo_iterations;
-  schedule_frame_move();
+  schedule_frame_move(F_);
 }

@@ -246,6 +246,23 @@ inline Mat3 polar_rotation(const Mat3& F)
   return R;
 }
 
+/// The rotation tensor of a rotation vector (Rodrigues' formula).
+inline Mat3 rotation_matrix(const Vec3& phi)
+{
+  const double angle = norm(phi);
+  Mat3 R = identity<3>();
+  if (angle == 0.0)
+    return R;
+  const Vec3 n = (1.0 / angle) * phi;
+  const double c = std::cos(angle), s = std::sin(angle);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      R[3 * i + j] = (i == j ? c : 0.0) + (1.0 - c) * n[i] * n[j];
+  R[1] -= s * n[2], R[2] += s * n[1], R[3] += s * n[2];
+  R[5] -= s * n[0], R[6] -= s * n[1], R[7] += s * n[0];
+  return R;
+}
+
 /// Rotation vector (axis times angle in [0, pi]) of a rotation tensor R.
 inline Vec3 rotation_vector(const Mat3& R)
 {
@@ -266,5 +283,19 @@ inline Vec3 rotation_vector(const Mat3& R)
   Vec3 n{{B[k], B[3 + k], B[6 + k]}};
   n = (1.0 / norm(n)) * n;
   return angle * n;
+}
+
+/**
+ * The deformation at s in [0, 1] on the path from F0 to F1 that turns with
+ * the rotation (R(s) = exp(s log(R1 R0^T)) R0) and stretches linearly
+ * (U(s) = U0 + s (U1 - U0)), F = R U: a rigid rotation stays rigid on the
+ * way, unlike F0 + s (F1 - F0), which squeezes the plane normal to the axis.
+ */
+inline Mat3 polar_path(const Mat3& F0, const Mat3& F1, double s)
+{
+  const Mat3 R0 = polar_rotation(F0), R1 = polar_rotation(F1);
+  const Mat3 U0 = matmul(transpose(R0), F0), U1 = matmul(transpose(R1), F1);
+  const Vec3 phi = rotation_vector(matmul(R1, transpose(R0)));
+  return matmul(matmul(rotation_matrix(s * phi), R0), U0 + s * (U1 - U0));
 }
 } // namespace fe2dem

@@ -7,8 +7,14 @@
 
 #include <mpi.h>
 
+#include <cstdio>
+
 int main(int argc, char** argv)
 {
+  // LIGGGHTS ends every error with MPI_Abort, which discards what stdio still
+  // buffers; line buffering keeps its "ERROR: ..." line when stdout is a pipe
+  // or a file (a terminal is line-buffered anyway), as Debian's liggghts does.
+  std::setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);
   MPI_Init(&argc, &argv);
   LAMMPS_NS::LAMMPS* lmp = nullptr;
   {

@@ -251,6 +251,8 @@ private:
   void fail(Status s, const std::string& reason);
   /// The contact of contacts_ with the largest overlap, for messages.
   std::string describe_largest_overlap() const;
+  /// Stops with an error if the packing's centres do not fit the dimension (z = 0 in 2D).
+  void check_packing_dimension();
   /// Stops with an error naming the pair if the packing as read overlaps beyond max_overlap.
   void check_reference_overlaps();
 

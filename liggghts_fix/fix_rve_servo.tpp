@@ -111,6 +111,7 @@ void FixRveServo<dim>::post_create()
     error->fix_error(FLERR, this, "must be defined before the first run (reference frame = current "
                                   "positions at definition)");
 
+  check_packing_dimension();
   // Frame topology from the positions at definition time: they are the reference X.
   std::vector<int> tags;
   std::vector<Vector> X;
@@ -222,6 +223,33 @@ void FixRveServo<dim>::map_physical_particles()
         physical_of_[dense(q)] = dense(g[0]);
   for (int c : frame_.corners)
     physical_of_[dense(c)] = dense(frame_.corners[0]);
+}
+
+// A 3D packing read with 'dimension 2' (or the reverse) would give a frame
+// error far from its cause; name the cause instead.
+template <int dim>
+void FixRveServo<dim>::check_packing_dimension()
+{
+  double z_min = 1e300, z_max = -1e300;
+  int tag_min = 0, tag_max = 0;
+  for (int i = 0; i < atom->nlocal; ++i)
+  {
+    if (atom->x[i][2] < z_min)
+      z_min = atom->x[i][2], tag_min = atom->tag[i];
+    if (atom->x[i][2] > z_max)
+      z_max = atom->x[i][2], tag_max = atom->tag[i];
+  }
+  std::ostringstream msg;
+  if (dim == 2 && (z_min != 0.0 || z_max != 0.0))
+    msg << "particle id " << (z_min != 0.0 ? tag_min : tag_max) << " has z = "
+        << (z_min != 0.0 ? z_min : z_max)
+        << ": a 2D RVE needs every centre at z = 0; this looks like a 3D packing (use "
+           "rve_setup_3d.liggghts and 'dimension 3')";
+  else if (dim == 3 && atom->nlocal > 1 && z_max - z_min <= 1e-12 * std::max(1.0, std::abs(z_max)))
+    msg << "every particle centre lies in the plane z = " << z_max
+        << ": this is a 2D packing (use rve_setup_2d.liggghts and 'dimension 2')";
+  if (!msg.str().empty())
+    error->fix_error(FLERR, this, msg.str().c_str());
 }
 
 template <int dim>

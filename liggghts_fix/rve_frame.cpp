@@ -235,7 +235,7 @@ FrameTopology<3> build_frame_3d(const std::vector<int>& tags, const std::vector<
     if (!g.cuts[0] && !g.cuts[1] && !g.cuts[2])
       throw std::runtime_error("unpaired " + describe(tags[o], X[o]) +
                                ": no periodic image at +Lx, +Ly or +Lz (and it is not the image of "
-                               "another frame particle); rebuild the frame with build_frame.py");
+                               "another frame particle); rebuild the frame with build_frame_3d.py");
     g.members[0] = static_cast<int>(o);
     for (int b = 1; b < 8; ++b)
     {
@@ -257,7 +257,7 @@ FrameTopology<3> build_frame_3d(const std::vector<int>& tags, const std::vector<
           if (g.cuts[a])
             msg << " " << axis[a] << " = 0";
         msg << " but its image " << describe(tags[from], X[from]) << " has no image at +L"
-            << axis[k] << "; a frame particle needs all 2^s images; rebuild the frame with build_frame.py";
+            << axis[k] << "; a frame particle needs all 2^s images; rebuild the frame with build_frame_3d.py";
         throw std::runtime_error(msg.str());
       }
       if (std::abs(radius[to] - radius[o]) > 1e-9 * radius[o])
@@ -288,12 +288,12 @@ FrameTopology<3> build_frame_3d(const std::vector<int>& tags, const std::vector<
     if (owner[i] < 0)
       throw std::runtime_error(describe(tags[i], X[i]) +
                                " is a periodic image whose original is itself an image along "
-                               "another axis only; rebuild the frame with build_frame.py");
+                               "another axis only; rebuild the frame with build_frame_3d.py");
   if (corner < 0)
     throw std::runtime_error("no corner particle with periodic images at +Lx, +Ly and +Lz (eight "
                              "images) in the frame group; check 'cell " + format(L[0]) + " " +
                              format(L[1]) + " " + format(L[2]) +
-                             "' against the packing (build it with rve_templates/build_frame.py)");
+                             "' against the packing (build it with rve_templates/build_frame_3d.py)");
 
   FrameTopology<3> frame;
   frame.L = L;

@@ -232,7 +232,7 @@ def write_outputs(args, L, out_atoms, stats):
         fh.write(f"variable rve_phi equal {stats['solid_fraction']:.9f}\n")
     with open(base + ".stats.txt.tmp", "w") as fh:
         for k, v in stats.items():
-            fh.write(f"{k} {v:.6g}\n" if isinstance(v, float) else f"{k} {v}\n")
+            fh.write(f"{k} {v!r}\n" if isinstance(v, float) else f"{k} {v}\n")
     # all three files or none
     for ext in (".rve.data", ".vars", ".stats.txt"):
         os.replace(base + ext + ".tmp", base + ext)

@@ -4,11 +4,13 @@
 # Makes one FE2DEM RVE packing in two steps:
 #   1. liggghts -in make_packing_2d.liggghts ... -var out OUTDIR/NAME.periodic.data
 #   2. build_frame.py OUTDIR/NAME.periodic.data NAME --outdir OUTDIR
+# (RVE_DIM=3: make_packing_3d.liggghts and build_frame_3d.py)
 # giving OUTDIR/NAME.periodic.data, NAME.rve.data, NAME.vars, NAME.stats.txt,
 # NAME.frame.txt.  Arguments after NAME go to liggghts; "KEY=VALUE" is a shorthand
 # for "-var KEY VALUE".  Do not pass "out" (it is set here).
 #
-# Environment: RVE_OUTDIR (default: packings/ next to this script),
+# Environment: RVE_DIM (2 or 3, default 2),
+#              RVE_OUTDIR (default: packings/ next to this script),
 #              LIGGGHTS (default: liggghts), PYTHON (default: python3),
 #              BUILD_FRAME_ARGS (extra options for build_frame.py),
 #              KEEP_LOG=1 keeps the LIGGGHTS log as OUTDIR/NAME.liggghts.log.
@@ -18,11 +20,16 @@ set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 if [[ $# -lt 1 || "$1" == -* ]]; then
-  sed -n '2,16p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+  sed -n '2,18p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
   exit 2
 fi
 name="$1"
 shift
+case "${RVE_DIM:-2}" in
+  2) packing_script=make_packing_2d.liggghts builder=build_frame.py ;;
+  3) packing_script=make_packing_3d.liggghts builder=build_frame_3d.py ;;
+  *) echo "make_rve.sh: RVE_DIM=${RVE_DIM} must be 2 or 3" >&2; exit 2 ;;
+esac
 outdir="${RVE_OUTDIR:-$here/packings}"
 liggghts="${LIGGGHTS:-liggghts}"
 python="${PYTHON:-python3}"
@@ -63,7 +70,7 @@ screen="$work/screen.txt"
 unbuf=()
 if command -v stdbuf >/dev/null; then unbuf=(stdbuf -o0 -e0); fi
 if ! (cd "$work" && "${unbuf[@]}" "$liggghts" -nocite -echo none -log "$log" \
-        -in "$here/make_packing_2d.liggghts" "${vars[@]}" -var out "$periodic" \
+        -in "$here/$packing_script" "${vars[@]}" -var out "$periodic" \
         >"$screen" 2>&1); then
   echo "make_rve.sh: LIGGGHTS failed for $name; its messages:" >&2
   grep -v '^ *[0-9]' "$screen" | grep -iv 'mpi_abort\|^--\|^NOTE\|^You may\|^exactly\|^$' | tail -n 15 >&2 || true
@@ -79,4 +86,4 @@ if [[ "${KEEP_LOG:-0}" == 1 ]]; then cp "$log" "$outdir/$name.liggghts.log"; fi
 echo "make_rve.sh: LIGGGHTS took $(( $(date +%s) - start )) s"
 
 # shellcheck disable=SC2086
-"$python" "$here/build_frame.py" "$periodic" "$name" --outdir "$outdir" ${BUILD_FRAME_ARGS:-}
+"$python" "$here/$builder" "$periodic" "$name" --outdir "$outdir" ${BUILD_FRAME_ARGS:-}

@@ -5,15 +5,19 @@
 //            rotation about an oblique axis
 //   restart  write_restart in the middle of a solve, read_restart in a fresh
 //            instance: the rest of the solve is bitwise the same
+//   random   a random packing: contact count, boundary = Love-Weber = virial
+//            stress, Hill-Mandel, objectivity
 #include "check.h"
 #include "fix_rve_servo.h"
 #include "liggghts_instance.h"
+#include "library.h"
 
 #include <mpi.h>
 
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <algorithm>
 #include <map>
 
 #include <unistd.h>
@@ -243,6 +247,90 @@ int run_restart()
   check.truth("frame positions bitwise", std::memcmp(xa.data(), xb.data(), xa.size() * sizeof xa[0]) == 0);
   return check.summary();
 }
+/// A random packing (rve_templates/packings/small_3d, 300 spheres):
+///  * one physical contact, one count: the RVE as built holds exactly the
+///    contacts of the periodic packing, counted by build_frame_3d.py on the
+///    periodic packing (minimum image), and the fix's coordination and fabric
+///    equal build_frame_3d.py's;
+///  * boundary stress (R6, R7) = Love-Weber (R8) = LIGGGHTS' own virial;
+///  * Hill-Mandel (R10) on an increment;
+///  * objectivity under 10 degrees about an oblique axis (in 1-degree solves).
+int run_random()
+{
+  Checker check("rve_3d_random");
+  const auto stats = numbers_of(packing + ".stats.txt");
+  // The packing's critical step is 2 sqrt(m_min/kn) = 2.1e-6 s.
+  const std::map<std::string, std::string> vars = {{"dt", "8e-7"}};
+  {
+    auto v = vars;
+    v["check_every"] = "1";
+    v["relax_tol"] = "1e30";
+    v["servo_tol"] = "1e30";
+    Rve3 frozen(v);
+    frozen.lmp.command("velocity inner set 0 0 0");
+    frozen.lmp.command("fix fe2dem_frozen inner freeze");
+    frozen.fix->set_deformation(identity<3>());
+    frozen.lmp.command("run 1");
+    const auto& c = frozen.fix->result().contacts;
+    check.equal_ints("contacts of the RVE = periodic contacts (build_frame_3d.py)", {c.n_contacts},
+                     {static_cast<int>(stats.at("n_contacts"))});
+    check.near("coordination = build_frame_3d.py's", c.coordination, stats.at("coordination"), 1e-12);
+    check.near("mechanical coordination = build_frame_3d.py's", c.mechanical_coordination,
+               stats.at("coordination_mechanical"), 1e-12);
+    check.near("fabric_11 = build_frame_3d.py's", c.fabric[0], stats.at("fabric_11"), 1e-12);
+    check.near("fabric_23 = build_frame_3d.py's", c.fabric[5], stats.at("fabric_23"), 1e-12);
+  }
+
+  Rve3 rve(vars);
+  rve.solve(identity<3>());
+  const Mat3 F1{0.999, 0.0005, 0.0, 0.0, 0.9995, 0.0, 0.0003, 0.0, 0.9992};
+  const Fix3::Result r1 = rve.solve(F1);
+  const double rel_lw = frobenius(r1.sigma - r1.sigma_lw) / frobenius(r1.sigma_lw);
+  std::cout << "  sigma11 boundary " << r1.sigma[0] << ", Love-Weber " << r1.sigma_lw[0] << "\n";
+  check.less("|sigma - sigma_LW| / |sigma_LW| < 1 %", rel_lw, 0.01);
+  // LIGGGHTS' virial (pressure tensor p_ij = -sigma_ij per box volume), to the cell.
+  rve.lmp.command("compute fe2dem_t all temp");
+  rve.lmp.command("compute fe2dem_pv all pressure fe2dem_t virial");
+  rve.lmp.command("thermo_style custom step c_fe2dem_pv[1] c_fe2dem_pv[2] c_fe2dem_pv[3]");
+  rve.lmp.command("run 0 post no");
+  auto* pv = static_cast<double*>(lammps_extract_compute(rve.lmp.lammps(), (char*)"fe2dem_pv", 0, 1));
+  double box = 1.0;
+  for (const char* axis : {"x", "y", "z"})
+    box *= *static_cast<double*>(lammps_extract_global(rve.lmp.lammps(), (char*)(std::string("box") + axis + "hi").c_str())) -
+           *static_cast<double*>(lammps_extract_global(rve.lmp.lammps(), (char*)(std::string("box") + axis + "lo").c_str()));
+  const double cell = det(F1) * rve.fix->frame().reference_volume();
+  for (int k = 0; k < 3; ++k)
+  {
+    const double s = -pv[k] * box / cell;
+    check.less("LIGGGHTS virial sigma" + std::to_string(11 * (k + 1)) + " vs boundary (relative)",
+               std::abs(s - r1.sigma[4 * k]) / std::abs(r1.sigma[4 * k]), 0.01);
+  }
+
+  // Hill-Mandel: P : dF = (1/V0) sum_q a_q . dx_q (trapezoidal) on an increment.
+  const auto x1 = rve.fix->frame_positions();
+  const auto a1 = rve.fix->frame_forces();
+  const Mat3 F2{0.9985, 0.001, 0.0002, 0.0, 0.999, 0.0, 0.0005, 0.0, 0.9988};
+  const Fix3::Result r2 = rve.solve(F2);
+  const auto x2 = rve.fix->frame_positions();
+  const auto a2 = rve.fix->frame_forces();
+  const double macro = dot(0.5 * (r1.P + r2.P), F2 - F1);
+  double micro = 0.0;
+  for (std::size_t q = 0; q < x1.size(); ++q)
+    micro += dot(0.5 * (a1[q] + a2[q]), x2[q] - x1[q]);
+  micro /= rve.fix->frame().reference_volume();
+  std::cout << "  P:dF = " << macro << ", (1/V) sum a.dx = " << micro << "\n";
+  check.less("Hill-Mandel |P:dF - (1/V) sum a.dx| / |P:dF|", std::abs(macro - micro) / std::abs(macro), 0.01);
+
+  // Objectivity: F2 turned by 10 degrees about (1, -2, 2) in ten solves.
+  const Mat3 Q = rotation({1.0, -2.0, 2.0}, 10.0);
+  for (int k = 1; k <= 10; ++k)
+    rve.solve(matmul(rotation({1.0, -2.0, 2.0}, k), F2));
+  const Mat3 expected = matmul(matmul(Q, r2.sigma), transpose(Q));
+  const double rel_q = frobenius(rve.fix->result().sigma - expected) / frobenius(expected);
+  std::cout << "  |sigma(QF) - Q sigma(F) Q^T| / |sigma| = " << rel_q << "\n";
+  check.less("objective under 10 degrees about (1,-2,2): |sigma(QF) - Q sigma Q^T| / |sigma| < 2 %", rel_q, 0.02);
+  return check.summary();
+}
 } // namespace
 
 int main(int argc, char** argv)
@@ -250,14 +338,14 @@ int main(int argc, char** argv)
   MPI_Init(&argc, &argv);
   int rc = 1;
   if (argc != 4)
-    std::cerr << "usage: test_rve_3d lattice|restart TEMPLATE PACKING_BASE\n";
+    std::cerr << "usage: test_rve_3d lattice|restart|random TEMPLATE PACKING_BASE\n";
   else
     try
     {
       template_file = argv[2];
       packing = argv[3];
       const std::string c = argv[1];
-      rc = c == "lattice" ? run_lattice() : c == "restart" ? run_restart() : 2;
+      rc = c == "lattice" ? run_lattice() : c == "restart" ? run_restart() : c == "random" ? run_random() : 2;
       if (rc == 2)
         std::cerr << "unknown case '" << c << "'\n";
     }

@@ -5,9 +5,10 @@
  * scripts/plot_particles.py read them.
  *
  * `PREFIX.particles` is a `dump custom` snapshot with columns
- * `id x y radius frame` (frame = 1 for boundary particles);
- * `PREFIX.contacts` is a `dump local` snapshot with columns
- * `id1 id2 x1 y1 x2 y2 fn ft`: fn the normal force (compression > 0) and
+ * `id x y radius frame` (3D: `id x y z radius frame`; frame = 1 for boundary
+ * particles); `PREFIX.contacts` is a `dump local` snapshot with columns
+ * `id1 id2 x1 y1 x2 y2 fn ft` (3D: `id1 id2 x1 y1 z1 x2 y2 z2 fn ft`): fn the
+ * normal force (compression > 0) and
  * ft the magnitude of the tangential force, in the RVE's force unit.
  */
 #pragma once
@@ -23,6 +24,7 @@ namespace fe2dem
  * @p fix. @param timestep the TIMESTEP written in both headers (e.g. the
  * macro load step). @throws std::runtime_error naming a file it cannot write.
  */
-void write_particle_dump(const LAMMPS_NS::FixRveServo<2>& fix, const std::string& prefix,
+template <int dim>
+void write_particle_dump(const LAMMPS_NS::FixRveServo<dim>& fix, const std::string& prefix,
                          long timestep);
 } // namespace fe2dem

@@ -324,4 +324,5 @@ int RvePool<dim>::rebalance()
   return moved;
 }
 template class RvePool<2>;
+template class RvePool<3>;
 } // namespace fe2dem

@@ -50,23 +50,26 @@ RveSetup packing_setup(const std::string& template_file, const std::string& pack
   return s;
 }
 
-ServoRve::ServoRve(const RveSetup& setup, HistoryMode mode)
+template <int dim>
+ServoRve<dim>::ServoRve(const RveSetup& setup, HistoryMode mode)
   : setup_(setup), mode_(mode), committed_file_(state_file("committed"))
 {
   open_instance("");
-  fix_->set_deformation(identity2()); // relax the packing as built
+  fix_->set_deformation(identity<dim>()); // relax the packing as built
   run_until_done();
   commit();
 }
 
-ServoRve::ServoRve(const RveSetup& setup, HistoryMode mode, const std::string& restart_file,
+template <int dim>
+ServoRve<dim>::ServoRve(const RveSetup& setup, HistoryMode mode, const std::string& restart_file,
                    FromRestart)
   : setup_(setup), mode_(mode), committed_file_(state_file("committed"))
 {
   open_instance(restart_file);
 }
 
-std::unique_ptr<ServoRve> ServoRve::restore(const RveSetup& setup, const std::vector<char>& state,
+template <int dim>
+std::unique_ptr<ServoRve<dim>> ServoRve<dim>::restore(const RveSetup& setup, const std::vector<char>& state,
                                             HistoryMode mode)
 {
   const std::string file = state_file("restore");
@@ -80,14 +83,16 @@ std::unique_ptr<ServoRve> ServoRve::restore(const RveSetup& setup, const std::ve
   return rve;
 }
 
-ServoRve::~ServoRve()
+template <int dim>
+ServoRve<dim>::~ServoRve()
 {
   instance_.reset();
   std::error_code ec;
   std::filesystem::remove(committed_file_, ec);
 }
 
-void ServoRve::open_instance(const std::string& restart_file)
+template <int dim>
+void ServoRve<dim>::open_instance(const std::string& restart_file)
 {
   instance_ = std::make_unique<LiggghtsInstance>(MPI_COMM_SELF, setup_.log_file);
   for (const auto& [name, value] : setup_.variables)
@@ -98,12 +103,13 @@ void ServoRve::open_instance(const std::string& restart_file)
     instance_->set_variable("rve_restart_file", restart_file);
   }
   instance_->file(setup_.template_file);
-  fix_ = &instance_->fix<LAMMPS_NS::FixRveServo<2>>(setup_.fix_id);
+  fix_ = &instance_->fix<Fix>(setup_.fix_id);
   budget_ = fix_->max_steps();
   limited_ = false; // a new instance has the template's budget
 }
 
-const ServoRve::Result& ServoRve::solve(const Mat2& F, long step_limit)
+template <int dim>
+const typename ServoRve<dim>::Result& ServoRve<dim>::solve(const Matrix& F, long step_limit)
 {
   if (mode_ == HistoryMode::committed && !at_committed_state_)
     rollback();
@@ -114,7 +120,8 @@ const ServoRve::Result& ServoRve::solve(const Mat2& F, long step_limit)
   return fix_->result();
 }
 
-bool ServoRve::limit_steps(long step_limit)
+template <int dim>
+bool ServoRve<dim>::limit_steps(long step_limit)
 {
   const long every = fix_->check_interval();
   const long limit = (step_limit + every - 1) / every * every;
@@ -131,34 +138,39 @@ bool ServoRve::limit_steps(long step_limit)
   return bounded;
 }
 
-void ServoRve::set_step_budget(long steps)
+template <int dim>
+void ServoRve<dim>::set_step_budget(long steps)
 {
   fix_->set_max_steps(steps);
 }
 
-const RveResponse<2>& ServoRve::solve(const Tensor& F)
+template <int dim>
+const RveResponse<dim>& ServoRve<dim>::solve(const Tensor& F)
 {
-  solve(macro_to_rve<2>(F), step_limit_);
+  solve(macro_to_rve<dim>(F), step_limit_);
   return response();
 }
 
-const RveResponse<2>& ServoRve::solve_increment(const Tensor& d_eps)
+template <int dim>
+const RveResponse<dim>& ServoRve<dim>::solve_increment(const Tensor& d_eps)
 {
-  const Mat2 F_now = mode_ == HistoryMode::committed ? committed_F_ : fix_->result().F;
-  const Tensor F_next = (Tensor::Identity() + d_eps) * rve_to_macro<2>(F_now);
+  const Matrix F_now = mode_ == HistoryMode::committed ? committed_F_ : fix_->result().F;
+  const Tensor F_next = (Tensor::Identity() + d_eps) * rve_to_macro<dim>(F_now);
   return solve(F_next);
 }
 
-const RveResponse<2>& ServoRve::response() const
+template <int dim>
+const RveResponse<dim>& ServoRve<dim>::response() const
 {
-  response_ = to_response(fix_->result());
+  response_ = to_response<dim>(fix_->result());
   response_.converged = last_converged_;
   return response_;
 }
 
-RveResponse<2> to_response(const LAMMPS_NS::FixRveServo<2>::Result& r)
+template <int dim>
+RveResponse<dim> to_response(const typename LAMMPS_NS::FixRveServo<dim>::Result& r)
 {
-  RveResponse<2> out;
+  RveResponse<dim> out;
   out.F = r.F;
   out.P = r.P;
   out.sigma = r.sigma;
@@ -168,12 +180,14 @@ RveResponse<2> to_response(const LAMMPS_NS::FixRveServo<2>::Result& r)
   return out;
 }
 
-void ServoRve::write_particles(const std::string& prefix, long timestep) const
+template <int dim>
+void ServoRve<dim>::write_particles(const std::string& prefix, long timestep) const
 {
   write_particle_dump(*fix_, prefix, timestep);
 }
 
-void ServoRve::commit()
+template <int dim>
+void ServoRve<dim>::commit()
 {
   committed_F_ = fix_->result().F;
   instance_->command("write_restart " + committed_file_);
@@ -181,7 +195,8 @@ void ServoRve::commit()
   at_committed_state_ = true;
 }
 
-void ServoRve::rollback()
+template <int dim>
+void ServoRve<dim>::rollback()
 {
   if (committed_bytes_ == 0)
     throw std::logic_error("ServoRve::rollback() before any commit()");
@@ -189,7 +204,8 @@ void ServoRve::rollback()
   at_committed_state_ = true;
 }
 
-std::vector<char> ServoRve::serialise()
+template <int dim>
+std::vector<char> ServoRve<dim>::serialise()
 {
   const std::string file = state_file("serialise");
   instance_->command("write_restart " + file);
@@ -198,36 +214,37 @@ std::vector<char> ServoRve::serialise()
   return bytes;
 }
 
-std::vector<char> ServoRve::committed_state() const
+template <int dim>
+std::vector<char> ServoRve<dim>::committed_state() const
 {
   if (committed_bytes_ == 0)
     throw std::logic_error("ServoRve::committed_state() before any commit()");
   return read_bytes(committed_file_);
 }
 
-void ServoRve::run_until_done(bool bounded)
+template <int dim>
+void ServoRve<dim>::run_until_done(bool bounded)
 {
   const double t0 = MPI_Wtime();
   // The first chunk of every solve does LIGGGHTS' full set-up (neighbour
   // lists rebuilt from scratch), as a restored instance must: that makes
   // restore and rollback bitwise; later chunks skip it.
   bool first = true;
-  while (fix_->status() == LAMMPS_NS::FixRveServo<2>::running)
+  while (fix_->status() == Fix::running)
   {
     const std::string n = std::to_string(fix_->check_interval());
     instance_->command(first ? "run " + n + " post no" : "run " + n + " pre no post no");
     first = false;
   }
   last_seconds_ = MPI_Wtime() - t0;
-  last_converged_ = fix_->status() == LAMMPS_NS::FixRveServo<2>::converged;
+  last_converged_ = fix_->status() == Fix::converged;
   // A bounded solve that used its steps is not a failure: the fix homogenised
   // the state it stopped in, and the next solve continues from there.
-  if (bounded && fix_->status() == LAMMPS_NS::FixRveServo<2>::over_budget)
+  if (bounded && fix_->status() == Fix::over_budget)
     return;
   if (!last_converged_)
-    throw RveSolveError(fix_->status(), std::string(LAMMPS_NS::FixRveServo<2>::status_name(
-                                          fix_->status())) +
-                                          ": " + fix_->failure_reason());
+    throw RveSolveError(fix_->status(),
+                        std::string(Fix::status_name(fix_->status())) + ": " + fix_->failure_reason());
 }
 } // namespace fe2dem
 
@@ -235,15 +252,19 @@ namespace fe2dem
 {
 namespace
 {
-class ServoRveFactory : public RveFactory<2>
+template <int dim>
+class ServoRveFactory : public RveFactory<dim>
 {
 public:
   ServoRveFactory(const RveSetup& setup, HistoryMode mode) : setup_(setup), mode_(mode) {}
   void check() const override { check_rve_template(setup_); }
-  std::unique_ptr<Rve<2>> create() const override { return std::make_unique<ServoRve>(setup_, mode_); }
-  std::unique_ptr<Rve<2>> restore(const std::vector<char>& state) const override
+  std::unique_ptr<Rve<dim>> create() const override
   {
-    return ServoRve::restore(setup_, state, mode_);
+    return std::make_unique<ServoRve<dim>>(setup_, mode_);
+  }
+  std::unique_ptr<Rve<dim>> restore(const std::vector<char>& state) const override
+  {
+    return ServoRve<dim>::restore(setup_, state, mode_);
   }
 
 private:
@@ -255,6 +276,17 @@ private:
 template <>
 std::unique_ptr<RveFactory<2>> make_servo_rve_factory<2>(const RveSetup& setup, HistoryMode mode)
 {
-  return std::make_unique<ServoRveFactory>(setup, mode);
+  return std::make_unique<ServoRveFactory<2>>(setup, mode);
 }
+
+template <>
+std::unique_ptr<RveFactory<3>> make_servo_rve_factory<3>(const RveSetup& setup, HistoryMode mode)
+{
+  return std::make_unique<ServoRveFactory<3>>(setup, mode);
+}
+
+template class ServoRve<2>;
+template class ServoRve<3>;
+template RveResponse<2> to_response<2>(const LAMMPS_NS::FixRveServo<2>::Result&);
+template RveResponse<3> to_response<3>(const LAMMPS_NS::FixRveServo<3>::Result&);
 } // namespace fe2dem

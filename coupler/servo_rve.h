@@ -29,17 +29,19 @@ namespace fe2dem
 class RveSolveError : public std::runtime_error
 {
 public:
-  RveSolveError(LAMMPS_NS::FixRveServo<2>::Status s, const std::string& what)
-    : std::runtime_error(what), status(s)
-  {
-  }
-  LAMMPS_NS::FixRveServo<2>::Status status;
+  RveSolveError(int s, const std::string& what) : std::runtime_error(what), status(s) {}
+  int status; ///< a FixRveServo<dim>::Status (the same values in 2D and 3D)
 };
 
-class ServoRve : public Rve<2>
+/// @tparam dim 2 or 3: the template's `dimension` (FixRveServo<dim>).
+template <int dim>
+class ServoRve : public Rve<dim>
 {
 public:
-  using Result = LAMMPS_NS::FixRveServo<2>::Result;
+  using Fix = LAMMPS_NS::FixRveServo<dim>;
+  using Result = typename Fix::Result;
+  using Tensor = typename Rve<dim>::Tensor;
+  using Matrix = fe2dem::Mat<dim>; ///< row-major dim x dim (the fix's layout)
 
   /// Builds the instance, relaxes the packing at F = I and commits that state.
   explicit ServoRve(const RveSetup& setup, HistoryMode mode = HistoryMode::continuous);
@@ -62,15 +64,15 @@ public:
    * stopped in, homogenised there, if it has not converged by then
    * (last_solve_converged() false). 0: run until the fix's step budget.
    */
-  const Result& solve(const Mat2& F, long step_limit = 0);
+  const Result& solve(const Matrix& F, long step_limit = 0);
   /// false if the last solve stopped at its step limit before converging.
   bool last_solve_converged() const { return last_converged_; }
 
-  // --- Rve<2> --------------------------------------------------------------
+  // --- Rve<dim> ------------------------------------------------------------
   /// macro_to_rve, solve(F, step limit of set_step_limit), rve_to_macro.
-  const RveResponse<2>& solve(const Tensor& F) override;
-  const RveResponse<2>& solve_increment(const Tensor& d_eps) override;
-  const RveResponse<2>& response() const override;
+  const RveResponse<dim>& solve(const Tensor& F) override;
+  const RveResponse<dim>& solve_increment(const Tensor& d_eps) override;
+  const RveResponse<dim>& response() const override;
   void set_step_limit(long steps) override { step_limit_ = steps; }
   void set_step_budget(long steps) override;
   /// Accepts the current state as the converged load step.
@@ -86,7 +88,7 @@ public:
   void write_particles(const std::string& prefix, long timestep) const override;
 
   const Result& result() const { return fix_->result(); }
-  LAMMPS_NS::FixRveServo<2>& fix() { return *fix_; }
+  Fix& fix() { return *fix_; }
   LiggghtsInstance& instance() { return *instance_; }
   HistoryMode history_mode() const { return mode_; }
   /// Bytes of the committed state image (the memory an RVE keeps besides LIGGGHTS).
@@ -107,17 +109,18 @@ private:
   std::string committed_file_;
   std::size_t committed_bytes_ = 0;
   bool at_committed_state_ = false;
-  Mat2 committed_F_{{1, 0, 0, 1}}; ///< F of the committed state
+  Matrix committed_F_ = identity<dim>(); ///< F of the committed state
   std::unique_ptr<LiggghtsInstance> instance_;
-  LAMMPS_NS::FixRveServo<2>* fix_ = nullptr;
+  Fix* fix_ = nullptr;
   double last_seconds_ = 0.0;
   long budget_ = 0;      ///< the template's step budget (max_steps), restored after bounded solves
   bool limited_ = false; ///< the fix's max_steps is currently a bound of limit_steps()
   bool last_converged_ = true;
   long step_limit_ = 0;               ///< of set_step_limit()
-  mutable RveResponse<2> response_;   ///< rve_to_macro of the fix's result
+  mutable RveResponse<dim> response_;   ///< rve_to_macro of the fix's result
 };
 
 /// rve_to_macro: the fix's result as the macro side sees it (rve_statistics.h).
-RveResponse<2> to_response(const LAMMPS_NS::FixRveServo<2>::Result& r);
+template <int dim>
+RveResponse<dim> to_response(const typename LAMMPS_NS::FixRveServo<dim>::Result& r);
 } // namespace fe2dem

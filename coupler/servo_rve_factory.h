@@ -14,10 +14,12 @@ namespace fe2dem
 {
 /**
  * RVEs built from @p setup, their trial solves starting as @p mode says.
- * Defined for dim = 2 (fix rve/servo is 2D so far).
+ * Defined for dim = 2 and 3; the template's `dimension` must match.
  */
 template <int dim>
 std::unique_ptr<RveFactory<dim>> make_servo_rve_factory(const RveSetup& setup, HistoryMode mode);
 template <>
 std::unique_ptr<RveFactory<2>> make_servo_rve_factory<2>(const RveSetup& setup, HistoryMode mode);
+template <>
+std::unique_ptr<RveFactory<3>> make_servo_rve_factory<3>(const RveSetup& setup, HistoryMode mode);
 } // namespace fe2dem

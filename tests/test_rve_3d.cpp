@@ -144,13 +144,15 @@ void check_periodic_frame(Checker& check, const Fix3& fix, const Mat3& F, const 
 //    so C44 = kt/(2d).
 // Every solve starts the inner spheres on the affine motion (inner_start
 // affine): the affine state is the equilibrium of a Bravais lattice.
+// Time step: a chain of equal spheres has its highest frequency at
+// 2 sqrt(kn/m), so dt = 2e-7 s is a third of its critical sqrt(m/kn).
 int run_lattice()
 {
   Checker check("rve_3d_lattice");
   const auto lat = numbers_of(packing + ".lattice.txt");
   const double d = lat.at("spacing"), R = lat.at("radius");
   const double kn = 1e5, kt = 2.5e4, delta0 = 2.0 * R - d, f0 = kn * delta0;
-  const std::map<std::string, std::string> vars = {{"kn", "1e5"}, {"kt", "2.5e4"}, {"mu", "0.5"},
+  const std::map<std::string, std::string> vars = {{"kn", "1e5"}, {"kt", "2.5e4"}, {"mu", "0.5"}, {"dt", "2e-7"},
                                                    {"inner_start", "affine"}, {"servo_tol", "1e-8"}};
   Rve3 rve(vars);
   const Fix3::Result r0 = rve.solve(identity<3>());
@@ -220,7 +222,7 @@ int run_restart()
 {
   Checker check("rve_3d_restart");
   const std::string file = "rve_3d_restart_" + std::to_string(::getpid()) + ".restart";
-  const std::map<std::string, std::string> vars = {{"inner_start", "keep"}, {"servo_tol", "1e-5"}};
+  const std::map<std::string, std::string> vars = {{"inner_start", "keep"}, {"servo_tol", "1e-5"}, {"dt", "2e-7"}};
   Rve3 a(vars);
   a.solve(identity<3>());
   const Mat3 F{0.999, 4e-4, 1e-4, -2e-4, 1.0005, 3e-4, 1e-4, -1e-4, 0.9995};
@@ -259,8 +261,7 @@ int run_random()
 {
   Checker check("rve_3d_random");
   const auto stats = numbers_of(packing + ".stats.txt");
-  // The packing's critical step is 2 sqrt(m_min/kn) = 2.1e-6 s.
-  const std::map<std::string, std::string> vars = {{"dt", "8e-7"}};
+  const std::map<std::string, std::string> vars = {}; // the template's defaults suit small_3d
   {
     auto v = vars;
     v["check_every"] = "1";

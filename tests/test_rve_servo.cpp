@@ -21,7 +21,7 @@
 #include <map>
 
 using namespace fe2dem;
-using Result = ServoRve::Result;
+using Result = ServoRve<2>::Result;
 
 namespace
 {
@@ -49,7 +49,7 @@ Mat2 rotation(double deg)
 /// Servo convergence, falling residual, periodicity of the frame after solves.
 void check_servo(Checker& check)
 {
-  ServoRve rve(setup());
+  ServoRve<2> rve(setup());
   for (const Mat2& F : {Mat2{0.998, 0.0, 0.0, 0.996}, Mat2{0.998, 0.004, 0.0, 0.992}})
   {
     // Record r_a at every servo iteration of this solve through the fix.
@@ -106,7 +106,7 @@ void check_servo(Checker& check)
 /// Boundary stress (R7) vs Love-Weber (R8) vs LIGGGHTS' virial pressure.
 void check_agreement(Checker& check)
 {
-  ServoRve rve(setup());
+  ServoRve<2> rve(setup());
   const Result r = rve.solve(Mat2{0.997, 0.002, 0.0, 0.994});
   check.less("|sigma - sigma_LW| / |sigma_LW| < 1 %", rel(r.sigma, r.sigma_lw), 0.01);
   // LIGGGHTS' own virial over the whole box; convert to the cell.
@@ -135,7 +135,7 @@ void check_agreement(Checker& check)
 /// (R10): P : dF = (1/V0) sum_q a_q . dx_q on an increment (trapezoidal in time).
 void check_hill_mandel(Checker& check)
 {
-  ServoRve rve(setup());
+  ServoRve<2> rve(setup());
   const Mat2 F1{0.998, 0.0, 0.0, 0.996}, F2{0.997, 0.001, 0.0, 0.994};
   const Result r1 = rve.solve(F1);
   const auto x1 = rve.fix().frame_positions();
@@ -156,9 +156,9 @@ void check_hill_mandel(Checker& check)
 void check_objectivity(Checker& check)
 {
   const Mat2 F{0.997, 0.0, 0.0, 0.993};
-  ServoRve a(setup());
+  ServoRve<2> a(setup());
   const Result ra = a.solve(F);
-  ServoRve b(setup());
+  ServoRve<2> b(setup());
   b.solve(F);
   const double angle = 10.0;
   for (int k = 1; k <= 10; ++k)
@@ -179,7 +179,7 @@ void check_rotation(Checker& check)
   int k = 0;
   for (const char* mode : {"free", "locked"})
   {
-    ServoRve rve(setup(mode));
+    ServoRve<2> rve(setup(mode));
     rve.solve(Mat2{0.998, 0.0, 0.0, 0.998});
     for (int s = 1; s <= 4; ++s)
       rve.solve(Mat2{0.998, 0.005 * s, 0.0, 0.998});
@@ -196,7 +196,7 @@ void check_rotation(Checker& check)
 /// Affine frame with the inner particles frozen (fix freeze): F_check = F.
 void check_frozen_inner(Checker& check)
 {
-  ServoRve rve(setup());
+  ServoRve<2> rve(setup());
   rve.instance().command("velocity inner set 0 0 0");
   rve.instance().command("fix fe2dem_frozen inner freeze");
   auto inner_positions = [&] {
@@ -223,7 +223,7 @@ void check_frozen_inner(Checker& check)
 /// (R13) as the relaxation criterion converges and is reported.
 void check_unbalanced(Checker& check)
 {
-  ServoRve rve(setup("free", {{"relax", "unbalanced"}, {"relax_tol", "0.01"}}));
+  ServoRve<2> rve(setup("free", {{"relax", "unbalanced"}, {"relax_tol", "0.01"}}));
   const Result r = rve.solve(Mat2{0.998, 0.0, 0.0, 0.996});
   check.less("r_a <= 1e-4 with relax unbalanced", r.residual, 1e-4 * (1 + 1e-12));
   check.less("unbalanced-force index <= 0.01 (R13)", r.unbalanced, 0.01);
@@ -335,7 +335,7 @@ void check_lattice(Checker& check)
   const LatticeClosedForm exact(kn, ks, lat.at("spacing"), lat.at("radius"));
   // Tight tolerances: the strain increments change contact forces by ~10 %,
   // and 1e-3 of that needs force residuals far below (R14)'s default.
-  ServoRve rve(setup("free", {{"kn", "1e7"}, {"kt", "2e6"}, {"mu", "0.4"}, {"servo_tol", "1e-9"},
+  ServoRve<2> rve(setup("free", {{"kn", "1e7"}, {"kt", "2e6"}, {"mu", "0.4"}, {"servo_tol", "1e-9"},
                               {"relax_tol", "1e-12"}, {"check_every", "20"}}),
                HistoryMode::committed);
   const double eps = 1e-3;
@@ -387,7 +387,7 @@ void check_affine_start(Checker& check)
   std::map<std::string, Result> results;
   for (const char* mode : {"affine", "keep"})
   {
-    ServoRve rve(setup("free", {{"inner_start", mode}, {"servo_tol", "1e-9"}, {"relax_tol", "1e-12"},
+    ServoRve<2> rve(setup("free", {{"inner_start", mode}, {"servo_tol", "1e-9"}, {"relax_tol", "1e-12"},
                                 {"check_every", "20"}}));
     auto* atom = rve.instance().lammps()->atom;
     const Vec2 origin = rve.fix().frame().origin;
@@ -438,9 +438,9 @@ double relative_imbalance(LAMMPS_NS::FixRveServo<2>& fix)
 /// (about 3e4 N/m), where (R14)'s inertia scale lets it grow.
 void check_servo_scale(Checker& check)
 {
-  ServoRve by_inertia(setup());
+  ServoRve<2> by_inertia(setup());
   const double inertia = relative_imbalance(by_inertia.fix());
-  ServoRve by_contact(setup("free", {{"servo_scale", "contact"}, {"servo_tol", "1e-3"}}));
+  ServoRve<2> by_contact(setup("free", {{"servo_scale", "contact"}, {"servo_tol", "1e-3"}}));
   const double contact = relative_imbalance(by_contact.fix());
   std::cout << "  rms pair imbalance / rms contact force at F = I: servo_tol 1e-4 (inertia) "
             << inertia << ", servo_tol 1e-3 (contact) " << contact << std::endl;
@@ -455,7 +455,7 @@ void check_budget(Checker& check)
 {
   check.throws_with("step budget exceeded -> RveSolveError",
                     [&] {
-                      ServoRve tight(setup("free", {{"max_steps", "200"}}));
+                      ServoRve<2> tight(setup("free", {{"max_steps", "200"}}));
                     },
                     "not converged within max_steps");
 }

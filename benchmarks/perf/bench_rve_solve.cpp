@@ -16,7 +16,7 @@ namespace
 {
 void measure(const std::string& name, const fe2dem::RveSetup& setup, fe2dem::HistoryMode mode)
 {
-  fe2dem::ServoRve rve(setup, mode);
+  fe2dem::ServoRve<2> rve(setup, mode);
   // F at the end of the isotropic stage and after the first axial step, as
   // measured with fe2dem-rve on this packing (tests/one_element/rve.prm).
   const fe2dem::Mat2 F_iso{0.984411912499, 0, 0, 0.988234989159};

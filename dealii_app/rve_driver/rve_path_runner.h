@@ -26,7 +26,7 @@ public:
   void run();
 
 private:
-  using Result = ServoRve::Result;
+  using Result = ServoRve<2>::Result;
   void open_output();
   void write_row(const Result& r, unsigned int stress_iterations);
   void run_isotropic_stage();
@@ -52,7 +52,7 @@ private:
                                   const std::vector<double>& targets, const std::string& what);
 
   const Parameters& prm_;
-  ServoRve rve_;
+  ServoRve<2> rve_;
   std::ofstream csv_;
   unsigned int step_ = 0;
   long dem_steps_in_step_ = 0;

@@ -3,6 +3,7 @@
 #include "quiet_output.h"
 #include "register_styles.h"
 
+#include "domain.h"
 #include "fix.h"
 #include "input.h"
 #include "lammps.h"
@@ -56,6 +57,11 @@ void LiggghtsInstance::file(const std::string& path)
 {
   QuietOutput quiet;
   lmp_->input->file(path.c_str());
+}
+
+int LiggghtsInstance::lammps_dimension() const
+{
+  return lmp_->domain->dimension;
 }
 
 void LiggghtsInstance::set_variable(const std::string& name, const std::string& value)

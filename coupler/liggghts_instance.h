@@ -39,6 +39,8 @@ public:
   void set_variable(const std::string& name, const std::string& value);
 
   LAMMPS_NS::LAMMPS* lammps() { return lmp_; }
+  /// The script's `dimension` (2 or 3).
+  int lammps_dimension() const;
 
   /// The fix with @p id cast to T.
   /// @throws std::runtime_error if there is no such fix or it has another style.

@@ -5,6 +5,8 @@ Usage: check_rve_csv.py CSV PATH_TYPE PRESSURE ISOTROPIC_STEPS ROWS
 Asserts the contract header, the row count, convergence of every row
 (r_a <= 1e-4), the agreement of boundary and Love-Weber stress (1 %), and
 that stress-controlled components hold the target within the tolerance.
+A 3D rve.csv (columns F11 ... F33) is recognised by its header; PATH_TYPE
+triaxial holds sigma11 = sigma22 = -p while F33 shortens.
 """
 import csv
 import math
@@ -12,7 +14,12 @@ import sys
 
 path, kind, pressure = sys.argv[1], sys.argv[2], float(sys.argv[3])
 n_iso, rows_expected = int(sys.argv[4]), int(sys.argv[5])
-head = ["step"] + [f"{t}{ij}" for t in ("F", "P", "sigma", "sigmaLW") for ij in ("11", "12", "21", "22")]
+with open(path) as f:
+    dim = 3 if "F33" in f.readline().split(",") else 2
+comps = [f"{i}{j}" for i in range(1, dim + 1) for j in range(1, dim + 1)]
+diag = [f"{i}{i}" for i in range(1, dim + 1)]
+axial = diag[-1]
+head = ["step"] + [f"{t}{ij}" for t in ("F", "P", "sigma", "sigmaLW") for ij in comps]
 head += ["residual", "ekin_epot", "servo_iterations", "dem_steps", "coordination", "anisotropy",
          "packing_fraction", "wall_s"]
 failures = []
@@ -28,8 +35,8 @@ for r in rows:
     s = int(r["step"])
     if not r["residual"] <= 1e-4:
         failures.append(f"step {s}: r_a {r['residual']} > 1e-4")
-    num = math.sqrt(sum((r[f"sigma{ij}"] - r[f"sigmaLW{ij}"]) ** 2 for ij in ("11", "12", "21", "22")))
-    den = math.sqrt(sum(r[f"sigmaLW{ij}"] ** 2 for ij in ("11", "12", "21", "22")))
+    num = math.sqrt(sum((r[f"sigma{ij}"] - r[f"sigmaLW{ij}"]) ** 2 for ij in comps))
+    den = math.sqrt(sum(r[f"sigmaLW{ij}"] ** 2 for ij in comps))
     if num > 0.01 * den:
         failures.append(f"step {s}: boundary vs Love-Weber stress differ by {num/den:.3%}")
     if r["coordination"] <= 0 or not 0 < r["packing_fraction"] < 1:
@@ -40,14 +47,16 @@ last = rows[-1]
 # Stress control: isotropic rows 1..n_iso reach -p k/n, biaxial rows hold sigma11 = -p
 # (tolerance: the prm's 'Stress tolerance' of 1 % plus round-off).
 for k, r in enumerate(rows[1 : n_iso + 1], start=1):
-    mean, target = 0.5 * (r["sigma11"] + r["sigma22"]), -pressure * k / n_iso
+    mean, target = sum(r[f"sigma{d}"] for d in diag) / dim, -pressure * k / n_iso
     if abs(mean - target) > 0.0101 * abs(target):
         failures.append(f"isotropic step {k}: mean stress {mean}, target {target}")
-if kind == "biaxial":
+if kind in ("biaxial", "triaxial"):
     for r in rows[n_iso + 1 :]:
-        if abs(r["sigma11"] + pressure) > 0.0101 * pressure:
-            failures.append(f"step {int(r['step'])}: lateral stress {r['sigma11']}, target {-pressure}")
-    if not last["F22"] < rows[0]["F22"] or not last["sigma22"] < last["sigma11"]:
+        for d in diag[:-1]:
+            if abs(r[f"sigma{d}"] + pressure) > 0.0101 * pressure:
+                failures.append(f"step {int(r['step'])}: lateral stress sigma{d} {r[f'sigma{d}']}, "
+                                f"target {-pressure}")
+    if not last[f"F{axial}"] < rows[0][f"F{axial}"] or not last[f"sigma{axial}"] < last["sigma11"]:
         failures.append("axial compression did not raise the axial stress above the lateral one")
 if kind == "shear" and not abs(last["sigma12"]) > 0:
     failures.append("no shear stress under simple shear")

@@ -53,8 +53,10 @@ int main(int argc, char** argv)
       parameters.parse(prm, argv[1]);
       if (with_output)
         parameters.output_directory = argv[3];
-      RvePathRunner runner(parameters);
-      runner.run();
+      if (parameters.path.dimension == 3)
+        RvePathRunner<3>(parameters).run();
+      else
+        RvePathRunner<2>(parameters).run();
     }
   }
   catch (const dealii::ExceptionBase& e)

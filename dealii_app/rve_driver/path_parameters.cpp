@@ -14,28 +14,35 @@ using dealii::Patterns::Selection;
 void PathParameters::declare_parameters(dealii::ParameterHandler& prm)
 {
   prm.enter_subsection("Path");
-  prm.declare_entry("Type", "biaxial", Selection("isotropic|biaxial|simple shear|table"),
-                    "isotropic: compression to 'Pressure'; biaxial: isotropic stage, then axial "
-                    "compression (F22) at constant lateral stress sigma11 = -Pressure; simple "
-                    "shear: isotropic stage, then F12 = gamma; table: F from 'Table file'.");
+  prm.declare_entry("Dimension", "2", Integer(2, 3),
+                    "2 or 3: the dimension of the RVE template (rve_setup_2d.liggghts or "
+                    "rve_setup_3d.liggghts); tensors in rve.csv have dim^2 components.");
+  prm.declare_entry("Type", "biaxial", Selection("isotropic|biaxial|triaxial|simple shear|table"),
+                    "isotropic: compression to 'Pressure'; biaxial (2D): isotropic stage, then axial "
+                    "compression (F22) at constant lateral stress sigma11 = -Pressure; triaxial "
+                    "(3D): isotropic stage, then axial compression (F33) at constant lateral "
+                    "stresses sigma11 = sigma22 = -Pressure; simple shear: isotropic stage, then "
+                    "F12 = gamma; table: F from 'Table file'.");
   prm.declare_entry("Pressure", "1.5e5", Double(0.0),
-                    "Confining pressure [N/m in 2D], compressive, >= 0.");
+                    "Confining pressure [N/m in 2D, Pa in 3D], compressive, >= 0.");
   prm.declare_entry("Isotropic steps", "5", Integer(0),
                     "Load steps of the isotropic stage (stress controlled).");
   prm.declare_entry("Loading steps", "20", Integer(1),
                     "Load steps of the biaxial or shear stage.");
   prm.declare_entry("Axial strain", "0.05", Double(0.0, 0.5),
-                    "biaxial: final axial compressive strain, F22 = (1 - strain) F22_iso.");
+                    "biaxial, triaxial: final axial compressive strain, F22 (3D: F33) = (1 - strain) "
+                    "times its value after the isotropic stage.");
   prm.declare_entry("Shear strain", "0.05", Double(-1.0, 1.0), "simple shear: final F12.");
   prm.declare_entry("Table file", "", Anything(),
-                    "table: whitespace-separated rows 'F11 F12 F21 F22', one load step each; "
-                    "'#' starts a comment.");
+                    "table: whitespace-separated rows 'F11 F12 F21 F22' (3D: the nine components "
+                    "F11 F12 F13 F21 ... F33, row by row), one load step each; '#' starts a comment.");
   prm.declare_entry("Stress tolerance", "1e-2", Double(0.0),
                     "Relative tolerance of stress-controlled components.");
   prm.declare_entry("Free shear", "false", dealii::Patterns::Bool(),
-                    "isotropic and biaxial: also hold sigma12 = 0 through F12 (and, in the "
-                    "isotropic stage, sigma11 = sigma22 = -p through F11, F22), i.e. the stress "
-                    "state of a macro element whose edges are free in shear.");
+                    "isotropic, biaxial, triaxial: also hold the shear stresses at 0 through the "
+                    "upper shear components of F (2D: sigma12 through F12; 3D: sigma12, sigma13, "
+                    "sigma23 through F12, F13, F23) and, in the isotropic stage, each normal stress "
+                    "at -p, i.e. the stress state of a macro element whose faces are free in shear.");
   prm.declare_entry("Isotropic control", "mean stress", dealii::Patterns::Selection("mean stress|each component"),
                     "isotropic stage without 'Free shear': 'mean stress' holds (sigma11 + sigma22)/2 = -p "
                     "with F11 = F22; 'each component' holds sigma11 = sigma22 = -p through F11 and F22 "
@@ -48,6 +55,7 @@ void PathParameters::declare_parameters(dealii::ParameterHandler& prm)
 void PathParameters::parse_parameters(dealii::ParameterHandler& prm, const std::string& base_dir)
 {
   prm.enter_subsection("Path");
+  dimension = prm.get_integer("Dimension");
   type = prm.get("Type");
   pressure = prm.get_double("Pressure");
   isotropic_steps = prm.get_integer("Isotropic steps");
@@ -63,6 +71,12 @@ void PathParameters::parse_parameters(dealii::ParameterHandler& prm, const std::
   if (type == "isotropic" && (pressure <= 0.0 || isotropic_steps == 0))
     throw std::runtime_error("subsection Path: Type = isotropic needs 'Pressure' > 0 and "
                              "'Isotropic steps' > 0");
+  if (type == "biaxial" && dimension == 3)
+    throw std::runtime_error("subsection Path: Type = biaxial is the 2D test; with Dimension = 3 "
+                             "use Type = triaxial");
+  if (type == "triaxial" && dimension == 2)
+    throw std::runtime_error("subsection Path: Type = triaxial needs Dimension = 3; in 2D use "
+                             "Type = biaxial");
   if (stress_tolerance <= 0.0)
     throw std::runtime_error("subsection Path: 'Stress tolerance' must be > 0");
 }

@@ -16,7 +16,8 @@ namespace fe2dem::rve_driver
 /// subsection Path: the macro path the RVE follows.
 struct PathParameters
 {
-  std::string type;          ///< isotropic | biaxial | simple shear | table
+  unsigned int dimension;    ///< 2 or 3: the RVE template's dimension
+  std::string type;          ///< isotropic | biaxial (2D) | triaxial (3D) | simple shear | table
   double pressure;           ///< confining pressure [N/m], > 0 compressive
   unsigned int isotropic_steps, loading_steps;
   double axial_strain, shear_strain;

@@ -22,19 +22,58 @@ RveSetup checked(const RveSetup& setup)
   check_rve_template(setup);
   return setup;
 }
+
+/// Row-major indices of the diagonal and of the upper off-diagonal components.
+template <int dim>
+std::vector<int> diagonal()
+{
+  std::vector<int> d;
+  for (int i = 0; i < dim; ++i)
+    d.push_back(i * (dim + 1));
+  return d;
+}
+template <int dim>
+std::vector<int> upper()
+{
+  std::vector<int> u;
+  for (int i = 0; i < dim; ++i)
+    for (int j = i + 1; j < dim; ++j)
+      u.push_back(i * dim + j);
+  return u;
+}
+std::vector<int> operator+(std::vector<int> a, const std::vector<int>& b)
+{
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
 } // namespace
 
-RvePathRunner::RvePathRunner(const Parameters& parameters)
+template <int dim>
+RvePathRunner<dim>::RvePathRunner(const Parameters& parameters)
   : prm_(parameters), rve_(checked(parameters.rve.setup("none")))
 {
-  // A first guess of the 2D bulk stiffness d sigma / d lambda ~ k_n; the
-  // secant iteration corrects it after the first trial.
-  slope_iso_ = 2.0 * prm_.rve.kn;
-  slope_lateral_ = prm_.rve.kn;
-  slopes_ = {{prm_.rve.kn, 0.3 * prm_.rve.kn, 0.3 * prm_.rve.kn, prm_.rve.kn}};
+  // A first guess of the stiffness d sigma / d F; the secant iteration
+  // corrects it after the first trial. 2D: ~ k_n (stress in N/m). 3D (Pa):
+  // with linear contacts the stress grows with the overlaps, and a strain
+  // eps changes an overlap delta by about 2 R eps, so d sigma/d eps ~
+  // 2 |sigma| R/delta from the relaxed packing (a guess off by orders of
+  // magnitude would send the first trial far past the target).
+  double k = prm_.rve.kn;
+  if constexpr (dim == 3)
+  {
+    const Result& r = rve_.result();
+    const double mean = std::abs(r.sigma[0] + r.sigma[4] + r.sigma[8]) / 3.0;
+    k = 2.0 * std::max(mean, 1.0) / std::max(r.contacts.mean_overlap, 1e-6);
+  }
+  slope_iso_ = dim * k;
+  slope_lateral_ = k;
+  for (int i = 0; i < dim; ++i)
+    for (int j = 0; j < dim; ++j)
+      slopes_[i * dim + j] = i == j ? k : 0.3 * k;
 }
 
-void RvePathRunner::open_output()
+template <int dim>
+void RvePathRunner<dim>::open_output()
 {
   std::filesystem::create_directories(prm_.output_directory);
   const std::string file = prm_.output_directory + "/rve.csv";
@@ -43,18 +82,20 @@ void RvePathRunner::open_output()
     throw std::runtime_error("cannot write '" + file + "': check 'Output directory'");
   csv_ << "step";
   for (const char* t : {"F", "P", "sigma", "sigmaLW"})
-    for (const char* ij : {"11", "12", "21", "22"})
-      csv_ << ',' << t << ij;
+    for (int i = 1; i <= dim; ++i)
+      for (int j = 1; j <= dim; ++j)
+        csv_ << ',' << t << i << j;
   csv_ << ",residual,ekin_epot,servo_iterations,dem_steps,coordination,anisotropy,"
           "packing_fraction,wall_s,mechanical_coordination,contacts,sliding_contacts,"
           "max_overlap,F_check_error,stress_iterations,membrane_steps\n";
   csv_ << std::setprecision(12);
 }
 
-void RvePathRunner::write_row(const Result& r, unsigned int stress_iterations)
+template <int dim>
+void RvePathRunner<dim>::write_row(const Result& r, unsigned int stress_iterations)
 {
   csv_ << step_;
-  for (const Mat2* t : {&r.F, &r.P, &r.sigma, &r.sigma_lw})
+  for (const Matrix* t : {&r.F, &r.P, &r.sigma, &r.sigma_lw})
     for (double v : *t)
       csv_ << ',' << v;
   const double F_check_error = frobenius(r.F_check - r.F) / frobenius(r.F);
@@ -65,17 +106,20 @@ void RvePathRunner::write_row(const Result& r, unsigned int stress_iterations)
        << r.contacts.n_sliding << ',' << r.contacts.max_overlap << ',' << F_check_error << ','
        << stress_iterations << ',' << r.membrane_steps << '\n';
   csv_.flush();
-  std::cout << "step " << std::setw(3) << step_ << "  F11 " << std::setw(9) << r.F[0] << "  F22 "
-            << std::setw(9) << r.F[3] << "  F12 " << std::setw(9) << r.F[1] << "  sigma11 "
-            << std::setw(11) << r.sigma[0] << "  sigma22 " << std::setw(11) << r.sigma[3]
+  const char* axial_name = dim == 2 ? "22" : "33";
+  std::cout << "step " << std::setw(3) << step_ << "  F11 " << std::setw(9) << r.F[0] << "  F"
+            << axial_name << " " << std::setw(9) << r.F[axial] << "  F12 " << std::setw(9) << r.F[1]
+            << "  sigma11 " << std::setw(11) << r.sigma[0] << "  sigma" << axial_name << " "
+            << std::setw(11) << r.sigma[axial]
             << "  DEM steps " << std::setw(8) << dem_steps_in_step_ << "  r_a " << r.residual
             << std::endl;
   ++step_;
   dem_steps_in_step_ = 0;
 }
 
-unsigned int RvePathRunner::control_stress(double& x, double target, double& slope,
-                                           const std::function<Mat2(double)>& make_F,
+template <int dim>
+unsigned int RvePathRunner<dim>::control_stress(double& x, double target, double& slope,
+                                           const std::function<Matrix(double)>& make_F,
                                            const std::function<double(const Result&)>& stress,
                                            const std::string& what)
 {
@@ -103,14 +147,15 @@ unsigned int RvePathRunner::control_stress(double& x, double target, double& slo
   throw std::runtime_error(msg.str());
 }
 
-unsigned int RvePathRunner::control_components(Mat2& F, const std::vector<int>& comps,
+template <int dim>
+unsigned int RvePathRunner<dim>::control_components(Matrix& F, const std::vector<int>& comps,
                                                const std::vector<double>& targets,
                                                const std::string& what)
 {
   const double scale = std::max(prm_.path.pressure, 1e-12);
   const double tol = prm_.path.stress_tolerance * scale;
-  Mat2 F_prev = F;
-  Mat2 s_prev = rve_.result().sigma;
+  Matrix F_prev = F;
+  Matrix s_prev = rve_.result().sigma;
   bool first = true;
   for (unsigned int it = 1; it <= prm_.path.max_stress_iterations; ++it)
   {
@@ -138,51 +183,83 @@ unsigned int RvePathRunner::control_components(Mat2& F, const std::vector<int>& 
   throw std::runtime_error(msg.str());
 }
 
-void RvePathRunner::run_isotropic_stage()
+template <int dim>
+void RvePathRunner<dim>::run_isotropic_stage()
 {
-  if (prm_.path.free_shear)
+  const std::vector<int> diag = diagonal<dim>(), shear = upper<dim>();
+  const std::string diag_names = dim == 2 ? "sigma11, sigma22" : "sigma11, sigma22, sigma33";
+  if (prm_.path.free_shear || prm_.path.isotropic_components)
   {
+    // every diagonal component at -p, with Free shear every shear component at 0
     for (unsigned int k = 1; k <= prm_.path.isotropic_steps; ++k)
     {
       const double p = -prm_.path.pressure * k / prm_.path.isotropic_steps;
-      const unsigned int its = control_components(F_, {0, 1, 3}, {p, 0.0, p}, "sigma11, sigma12, sigma22");
-      write_row(rve_.result(), its);
-    }
-    return;
-  }
-  if (prm_.path.isotropic_components)
-  {
-    for (unsigned int k = 1; k <= prm_.path.isotropic_steps; ++k)
-    {
-      const double p = -prm_.path.pressure * k / prm_.path.isotropic_steps;
-      const unsigned int its = control_components(F_, {0, 3}, {p, p}, "sigma11, sigma22");
+      std::vector<int> comps = diag;
+      std::vector<double> targets(dim, p);
+      if (prm_.path.free_shear)
+      {
+        comps = dim == 2 ? std::vector<int>{0, 1, 3} : diag + shear; // 2D: the order of issue 9
+        targets = dim == 2 ? std::vector<double>{p, 0.0, p} : std::vector<double>{p, p, p, 0.0, 0.0, 0.0};
+      }
+      const unsigned int its = control_components(
+        F_, comps, targets, prm_.path.free_shear ? diag_names + " and the shear stresses" : diag_names);
       write_row(rve_.result(), its);
     }
     return;
   }
   const unsigned int n = prm_.path.isotropic_steps;
   double lambda = F_[0];
+  const auto isotropic = [](double l) {
+    Matrix F{};
+    for (int i = 0; i < dim; ++i)
+      F[i * (dim + 1)] = l;
+    return F;
+  };
   for (unsigned int k = 1; k <= n; ++k)
   {
     const double target = -prm_.path.pressure * k / n;
     const unsigned int its = control_stress(
-      lambda, target, slope_iso_, [](double l) { return Mat2{{l, 0.0, 0.0, l}}; },
-      [](const Result& r) { return 0.5 * (r.sigma[0] + r.sigma[3]); }, "the mean stress");
-    F_ = {{lambda, 0.0, 0.0, lambda}};
+      lambda, target, slope_iso_, isotropic,
+      [](const Result& r) {
+        double trace = r.sigma[0];
+        for (int i = 1; i < dim; ++i)
+          trace += r.sigma[i * (dim + 1)];
+        return trace / dim;
+      },
+      "the mean stress");
+    F_ = isotropic(lambda);
     write_row(rve_.result(), its);
   }
 }
 
-void RvePathRunner::run_biaxial_stage()
+// Axial compression along the last axis at constant lateral stress: biaxial
+// in 2D (sigma11 = -p), triaxial in 3D (sigma11 = sigma22 = -p).
+template <int dim>
+void RvePathRunner<dim>::run_biaxial_stage()
 {
-  const double F22_iso = F_[3];
+  const double F_axial_iso = F_[axial];
   double F11 = F_[0];
   for (unsigned int k = 1; k <= prm_.path.loading_steps; ++k)
   {
-    const double F22 = F22_iso * (1.0 - prm_.path.axial_strain * k / prm_.path.loading_steps);
+    const double F_axial = F_axial_iso * (1.0 - prm_.path.axial_strain * k / prm_.path.loading_steps);
+    if constexpr (dim == 3)
+    {
+      F_[axial] = F_axial;
+      unsigned int its = 0;
+      if (prm_.path.free_shear)
+        its = control_components(F_, {0, 4, 1, 2, 5}, {-prm_.path.pressure, -prm_.path.pressure, 0.0, 0.0, 0.0},
+                                 "sigma11, sigma22 and the shear stresses");
+      else if (prm_.path.pressure > 0.0)
+        its = control_components(F_, {0, 4}, {-prm_.path.pressure, -prm_.path.pressure},
+                                 "the lateral stresses sigma11, sigma22");
+      else
+        dem_steps_in_step_ += rve_.solve(F_).dem_steps;
+      write_row(rve_.result(), its);
+      continue;
+    }
     if (prm_.path.free_shear)
     {
-      F_[3] = F22;
+      F_[axial] = F_axial;
       const unsigned int its =
         control_components(F_, {0, 1}, {-prm_.path.pressure, 0.0}, "sigma11, sigma12");
       write_row(rve_.result(), its);
@@ -192,27 +269,29 @@ void RvePathRunner::run_biaxial_stage()
     if (prm_.path.pressure > 0.0)
       its = control_stress(
         F11, -prm_.path.pressure, slope_lateral_,
-        [F22](double f) { return Mat2{{f, 0.0, 0.0, F22}}; },
+        [F_axial](double f) { return Matrix{{f, 0.0, 0.0, F_axial}}; },
         [](const Result& r) { return r.sigma[0]; }, "the lateral stress sigma11");
     else
-      dem_steps_in_step_ += rve_.solve(Mat2{{F11, 0.0, 0.0, F22}}).dem_steps;
-    F_ = {{F11, 0.0, 0.0, F22}};
+      dem_steps_in_step_ += rve_.solve(Matrix{{F11, 0.0, 0.0, F_axial}}).dem_steps;
+    F_ = {{F11, 0.0, 0.0, F_axial}};
     write_row(rve_.result(), its);
   }
 }
 
-void RvePathRunner::run_shear_stage()
+template <int dim>
+void RvePathRunner<dim>::run_shear_stage()
 {
   for (unsigned int k = 1; k <= prm_.path.loading_steps; ++k)
   {
-    const double gamma = prm_.path.shear_strain * k / prm_.path.loading_steps;
-    const Mat2 F{{F_[0], gamma, 0.0, F_[3]}};
+    Matrix F = F_;
+    F[1] = prm_.path.shear_strain * k / prm_.path.loading_steps; // F12 = gamma
     dem_steps_in_step_ += rve_.solve(F).dem_steps;
     write_row(rve_.result(), 0);
   }
 }
 
-void RvePathRunner::run_table()
+template <int dim>
+void RvePathRunner<dim>::run_table()
 {
   std::ifstream in(prm_.path.table_file);
   std::string line;
@@ -224,17 +303,22 @@ void RvePathRunner::run_table()
     if (line.find_first_not_of(" \t\r") == std::string::npos)
       continue;
     std::istringstream s(line);
-    Mat2 F;
+    Matrix F;
+    bool read = true;
+    for (double& f : F)
+      read = read && (s >> f) && std::isfinite(f);
     std::string extra;
-    if (!(s >> F[0] >> F[1] >> F[2] >> F[3]) || (s >> extra) || !(det(F) > 0.0))
-      throw std::runtime_error(prm_.path.table_file + ":" + std::to_string(line_no) + ": '" +
-                               line + "' is not four numbers F11 F12 F21 F22 with det F > 0");
+    if (!read || (s >> extra) || !(det(F) > 0.0))
+      throw std::runtime_error(prm_.path.table_file + ":" + std::to_string(line_no) + ": '" + line +
+                               (dim == 2 ? "' is not four numbers F11 F12 F21 F22 with det F > 0"
+                                         : "' is not nine numbers F11 F12 F13 F21 ... F33 with det F > 0"));
     dem_steps_in_step_ += rve_.solve(F).dem_steps;
     write_row(rve_.result(), 0);
   }
 }
 
-void RvePathRunner::run()
+template <int dim>
+void RvePathRunner<dim>::run()
 {
   t_start_ = MPI_Wtime();
   open_output();
@@ -246,7 +330,7 @@ void RvePathRunner::run()
   else
   {
     run_isotropic_stage();
-    if (type == "biaxial")
+    if (type == "biaxial" || type == "triaxial")
       run_biaxial_stage();
     else if (type == "simple shear")
       run_shear_stage();
@@ -254,4 +338,7 @@ void RvePathRunner::run()
   std::cout << "fe2dem-rve: " << step_ << " rows written to " << prm_.output_directory
             << "/rve.csv in " << MPI_Wtime() - t_start_ << " s" << std::endl;
 }
+
+template class RvePathRunner<2>;
+template class RvePathRunner<3>;
 } // namespace fe2dem::rve_driver

@@ -1,8 +1,9 @@
 /**
  * @file rve_path_runner.h
- * Drives one RVE along a macro path (isotropic compression, biaxial
- * compression at constant lateral stress, simple shear, F(t) table) and
- * writes rve.csv, one row per converged load step.
+ * Drives one RVE (2D or 3D) along a macro path (isotropic compression,
+ * biaxial (2D) or triaxial (3D) compression at constant lateral stress,
+ * simple shear, F(t) table) and writes rve.csv, one row per converged load
+ * step. The axial direction is the last axis (y in 2D, z in 3D).
  *
  * Stress-controlled components are reached by a secant iteration on the
  * matching component of F; the RVE continues from each trial (continuous
@@ -19,6 +20,7 @@
 
 namespace fe2dem::rve_driver
 {
+template <int dim>
 class RvePathRunner
 {
 public:
@@ -26,7 +28,9 @@ public:
   void run();
 
 private:
-  using Result = ServoRve<2>::Result;
+  using Result = typename ServoRve<dim>::Result;
+  using Matrix = Mat<dim>;
+  static constexpr int axial = (dim - 1) * (dim + 1); ///< row-major index of F_dd
   void open_output();
   void write_row(const Result& r, unsigned int stress_iterations);
   void run_isotropic_stage();
@@ -39,7 +43,7 @@ private:
    * @return number of RVE solves used
    */
   unsigned int control_stress(double& x, double target, double& slope,
-                              const std::function<Mat2(double)>& make_F,
+                              const std::function<Matrix(double)>& make_F,
                               const std::function<double(const Result&)>& stress,
                               const std::string& what);
 
@@ -48,17 +52,17 @@ private:
    * that the same Cauchy components reach @p targets, by simultaneous
    * secant steps with one slope per component. @return RVE solves used.
    */
-  unsigned int control_components(Mat2& F, const std::vector<int>& comps,
+  unsigned int control_components(Matrix& F, const std::vector<int>& comps,
                                   const std::vector<double>& targets, const std::string& what);
 
   const Parameters& prm_;
-  ServoRve<2> rve_;
+  ServoRve<dim> rve_;
   std::ofstream csv_;
   unsigned int step_ = 0;
   long dem_steps_in_step_ = 0;
   double t_start_ = 0.0;
-  Mat2 F_{{1, 0, 0, 1}};
+  Matrix F_ = identity<dim>();
   double slope_iso_ = 0.0, slope_lateral_ = 0.0;
-  Mat2 slopes_{};  ///< d sigma_c / d F_c estimates of the mixed control
+  Matrix slopes_{}; ///< d sigma_c / d F_c estimates of the mixed control
 };
 } // namespace fe2dem::rve_driver

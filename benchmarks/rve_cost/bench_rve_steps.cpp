@@ -2,7 +2,7 @@
 // fix rve/servo, chunked runs "run N pre no post no"), as a user of
 // fe2dem-rve or the coupler pays it. The servo tolerance is set to 0 so
 // that the solve never ends and every step is a real relax/servo step.
-// Usage: bench_rve_steps TEMPLATE PACKING_PREFIX STEPS [CHECK_EVERY]
+// Usage: bench_rve_steps TEMPLATE PACKING_PREFIX STEPS [CHECK_EVERY] (2D or 3D template)
 #include "servo_rve.h"
 
 #include <mpi.h>
@@ -28,9 +28,9 @@ int main(int argc, char** argv)
   for (const auto& [k, v] : setup.variables)
     lmp.set_variable(k, v);
   lmp.file(setup.template_file);
-  auto& fix = lmp.fix<LAMMPS_NS::FixRveServo<2>>("rve");
+  const int chunk = lmp.lammps_dimension() == 3 ? lmp.fix<LAMMPS_NS::FixRveServo<3>>("rve").check_interval()
+                                                : lmp.fix<LAMMPS_NS::FixRveServo<2>>("rve").check_interval();
   lmp.command("run 0 post no");
-  const int chunk = fix.check_interval();
   const double t0 = MPI_Wtime();
   long done = 0;
   for (; done < steps; done += chunk)

@@ -207,25 +207,46 @@ inline Vec2 sym_eigenvalues(const Mat2& A)
   const double m = 0.5 * (a + d), r = std::sqrt(0.25 * (a - d) * (a - d) + b * b);
   return {{m + r, m - r}};
 }
-/// Eigenvalues of the symmetric part, largest first (trigonometric form of
-/// the characteristic cubic; accurate to round-off relative to |A|).
+/// Eigenvalues of the symmetric part, largest first (cyclic Jacobi rotations:
+/// accurate to round-off also for repeated eigenvalues).
 inline Vec3 sym_eigenvalues(const Mat3& A)
 {
-  const double a11 = A[0], a22 = A[4], a33 = A[8];
-  const double a12 = 0.5 * (A[1] + A[3]), a13 = 0.5 * (A[2] + A[6]), a23 = 0.5 * (A[5] + A[7]);
-  const double m = (a11 + a22 + a33) / 3.0;
-  const double b11 = a11 - m, b22 = a22 - m, b33 = a33 - m;
-  const double p2 = (b11 * b11 + b22 * b22 + b33 * b33 + 2.0 * (a12 * a12 + a13 * a13 + a23 * a23)) / 6.0;
-  if (!(p2 > 0.0))
-    return {{m, m, m}};
-  const double p = std::sqrt(p2);
-  const double det_b = b11 * (b22 * b33 - a23 * a23) - a12 * (a12 * b33 - a23 * a13) +
-                       a13 * (a12 * a23 - b22 * a13);
-  const double r = std::clamp(det_b / (2.0 * p2 * p), -1.0, 1.0);
-  const double phi = std::acos(r) / 3.0;
-  const double e1 = m + 2.0 * p * std::cos(phi);
-  const double e3 = m + 2.0 * p * std::cos(phi + 2.0 * M_PI / 3.0);
-  return {{e1, 3.0 * m - e1 - e3, e3}};
+  double a[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      a[i][j] = 0.5 * (A[3 * i + j] + A[3 * j + i]);
+  for (int sweep = 0; sweep < 50; ++sweep)
+  {
+    const double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+    const double diag = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
+    if (off <= 1e-32 * diag || off == 0.0)
+      break;
+    for (int p = 0; p < 2; ++p)
+      for (int q = p + 1; q < 3; ++q)
+      {
+        if (a[p][q] == 0.0)
+          continue;
+        // rotation in the (p, q) plane that zeroes a[p][q]
+        const double theta = 0.5 * (a[q][q] - a[p][p]) / a[p][q];
+        const double t = (theta >= 0.0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
+        const double c = 1.0 / std::sqrt(t * t + 1.0), s = t * c;
+        for (int k = 0; k < 3; ++k) // columns p, q
+        {
+          const double akp = a[k][p], akq = a[k][q];
+          a[k][p] = c * akp - s * akq;
+          a[k][q] = s * akp + c * akq;
+        }
+        for (int k = 0; k < 3; ++k) // rows p, q
+        {
+          const double apk = a[p][k], aqk = a[q][k];
+          a[p][k] = c * apk - s * aqk;
+          a[q][k] = s * apk + c * aqk;
+        }
+      }
+  }
+  Vec3 e{{a[0][0], a[1][1], a[2][2]}};
+  std::sort(e.begin(), e.end(), [](double x, double y) { return x > y; });
+  return e;
 }
 
 /**

@@ -4,6 +4,7 @@
 #include "rve_frame.h"
 #include "rve_homogenisation.h"
 
+#include <algorithm>
 #include <cmath>
 
 using namespace fe2dem;
@@ -22,11 +23,147 @@ FrameTopology<2> small_frame()
   std::vector<double> R = {0.1, 0.1, 0.1, 0.1, 0.2, 0.1, 0.2, 0.1};
   return build_frame_topology<2>(tags, X, R, {2.0, 1.0}, 1e-12);
 }
+
+// 3D: cell 2 x 1 x 1, spheres of radius 0.1 centred on the planes they cut:
+// the corner (8 images), one face pair per axis, one edge group along x
+// (cuts y = 0 and z = 0; 4 images); given shuffled with an offset origin.
+// Every centre lies on its planes, so each image on a face gets the same
+// cross-section pi R^2: face x = 0 (area 1) is shared by 4 corner images and
+// one face sphere, a = 1/5 each; faces y = 0 and z = 0 (area 2) by 4 corner
+// images, one face sphere and two edge images, a = 2/7 each.
+FrameTopology<3> small_frame_3d()
+{
+  const Vec3 o{{10.0, -3.0, 0.5}};
+  std::vector<Vec3> X;
+  for (int b = 7; b >= 0; --b) // corner images, shuffled
+    X.push_back(o + Vec3{{2.0 * (b & 1), 1.0 * (b >> 1 & 1), 1.0 * (b >> 2 & 1)}});
+  for (const Vec3& p : {Vec3{{2, 0.5, 0.5}}, Vec3{{0, 0.5, 0.5}}, Vec3{{1, 0, 0.5}}, Vec3{{1, 1, 0.5}},
+                        Vec3{{1, 0.5, 1}}, Vec3{{1, 0.5, 0}}, Vec3{{1, 1, 1}}, Vec3{{1, 0, 0}},
+                        Vec3{{1, 1, 0}}, Vec3{{1, 0, 1}}})
+    X.push_back(o + p);
+  std::vector<int> tags;
+  for (std::size_t k = 0; k < X.size(); ++k)
+    tags.push_back(static_cast<int>(100 + k));
+  return build_frame_topology<3>(tags, X, std::vector<double>(X.size(), 0.1), {{2.0, 1.0, 1.0}}, 1e-12);
+}
+
+/// The frame index of the image at reference position X (relative to the origin).
+int at(const FrameTopology<3>& frame, const Vec3& X)
+{
+  for (std::size_t q = 0; q < frame.particles.size(); ++q)
+    if (norm(frame.particles[q].X - X) < 1e-12)
+      return static_cast<int>(q);
+  return -1;
+}
+
+void check_3d(Checker& check)
+{
+  const FrameTopology<3> frame = small_frame_3d();
+  std::vector<int> sizes;
+  for (const auto& g : frame.groups)
+    sizes.push_back(static_cast<int>(std::count_if(g.begin(), g.end(), [](int q) { return q >= 0; })));
+  std::sort(sizes.begin(), sizes.end());
+  check.equal_ints("3D groups: three face pairs and one edge group of four", sizes, {2, 2, 2, 4});
+  check.near("3D origin = the corner", norm(frame.origin - Vec3{{10.0, -3.0, 0.5}}), 0.0, 0.0);
+  const Vec3 A0 = frame.particles[at(frame, {{0, 0, 0}})].area_vector;
+  const Vec3 A7 = frame.particles[at(frame, {{2, 1, 1}})].area_vector;
+  check.near("corner (0,0,0): A_x = -1/5", A0[0], -0.2, 1e-15);
+  check.near("corner (0,0,0): A_y = -2/7", A0[1], -2.0 / 7.0, 1e-15);
+  check.near("corner (2,1,1): A_z = +2/7", A7[2], 2.0 / 7.0, 1e-15);
+  const Vec3 Ae = frame.particles[at(frame, {{1, 1, 0}})].area_vector; // edge image: +y, z = 0 face
+  check.near("edge image (1,1,0): A = (0, 2/7, -2/7)", norm(Ae - Vec3{{0.0, 2.0 / 7.0, -2.0 / 7.0}}), 0.0, 1e-15);
+
+  // F_check = F for an affine frame under shear + rotation about an oblique
+  // axis, also with a periodic fluctuation per group (and none for corners).
+  const Vec3 n = (1.0 / std::sqrt(14.0)) * Vec3{{1.0, 2.0, 3.0}};
+  const Mat3 R = rotation_matrix((35.0 * M_PI / 180.0) * n);
+  const Mat3 U{1.02, 0.03, -0.01, 0.03, 0.97, 0.02, -0.01, 0.02, 1.01}; // symmetric stretch with shear
+  const Mat3 F = matmul(R, U);
+  std::vector<Vec3> x(frame.particles.size());
+  for (std::size_t q = 0; q < x.size(); ++q)
+    x[q] = apply(F, frame.particles[q].X);
+  check.less("3D F_check = F, affine frame", frobenius(frame_deformation(frame, x) - F), 1e-14);
+  for (std::size_t e = 0; e < frame.groups.size(); ++e)
+    for (int q : frame.groups[e])
+      if (q >= 0)
+        x[q] = x[q] + Vec3{{0.01 * (e + 1), -0.02 * e, 0.005}};
+  check.less("3D F_check = F, periodic fluctuations", frobenius(frame_deformation(frame, x) - F), 1e-14);
+  check.less("polar rotation of F is R", frobenius(polar_rotation(F) - R), 1e-12);
+  check.less("rotation vector of R is 35 deg about (1,2,3)",
+             norm(rotation_vector(R) - (35.0 * M_PI / 180.0) * n), 1e-14);
+
+  // (R6) P = (1/V) sum a (x) X: the x face pair pushed apart (a = -+1 e1) and
+  // the edge group's images at z = 0 and z = 1 pushed apart along z (a = -+2 e3):
+  // P11 = -(1/V) 1 Lx = -1, P33 = -(1/V) 2 Lz = -1, V = 2.
+  std::vector<Vec3> a(frame.particles.size(), Vec3{});
+  a[at(frame, {{0, 0.5, 0.5}})] = {{1.0, 0.0, 0.0}};
+  a[at(frame, {{2, 0.5, 0.5}})] = {{-1.0, 0.0, 0.0}};
+  a[at(frame, {{1, 0, 0}})] = {{0.0, 0.0, 2.0}};
+  a[at(frame, {{1, 0, 1}})] = {{0.0, 0.0, -2.0}};
+  const Mat3 P = boundary_piola(frame, a);
+  check.near("3D P11 by hand", P[0], -1.0, 1e-15);
+  check.near("3D P33 by hand", P[8], -1.0, 1e-15);
+  check.less("3D P: other components zero", std::abs(P[1]) + std::abs(P[2]) + std::abs(P[4]) + std::abs(P[5]), 1e-15);
+  const Mat3 sigma = cauchy_from_piola(P, identity<3>());
+  check.near("3D Cauchy = P at F = I", sigma[8], -1.0, 1e-15);
+
+  // Love-Weber, fabric and its invariants on four contacts by hand:
+  // two along x, one along y, one along z, radii 0.1, centre distance 0.19.
+  ContactLaw law;
+  law.kn = 100.0;
+  law.kt = 50.0;
+  law.friction = 0.5;
+  std::vector<Contact<3>> c(4);
+  const Vec3 dirs[4] = {{{1, 0, 0}}, {{1, 0, 0}}, {{0, 1, 0}}, {{0, 0, 1}}};
+  for (int k = 0; k < 4; ++k)
+  {
+    c[k].i = k;
+    c[k].j = 4;
+    c[k].xi = Vec3{{0.0, 0.0, 0.0}};
+    c[k].xj = 0.19 * dirs[k];
+    c[k].ri = c[k].rj = 0.1;
+    c[k].force_on_i = -1.0 * dirs[k]; // repulsive, 1 N
+  }
+  c[0].force_on_i = c[0].force_on_i + Vec3{{0.0, 0.5, 0.0}}; // and 0.5 N tangential (sliding: 0.5 = mu 1)
+  const ContactStatistics<3> st = contact_statistics(c, {0, 1, 2, 3, 4}, law);
+  check.near("3D Love-Weber sum 11 = 2 (-1)(0.19)", st.love_weber_sum[0], -0.38, 1e-15);
+  check.near("3D Love-Weber sum 21 = 0.5 (0.19)", st.love_weber_sum[3], 0.095, 1e-15);
+  check.near("3D Love-Weber sum 33 = -0.19", st.love_weber_sum[8], -0.19, 1e-15);
+  check.near("3D fabric 11 = 2/4", st.fabric[0], 0.5, 1e-15);
+  check.near("3D fabric 22 = 1/4", st.fabric[4], 0.25, 1e-15);
+  check.near("3D anisotropy Pi_max/Pi_min - 1 = 1", st.anisotropy, 1.0, 1e-14);
+  check.near("3D deviatoric invariant sqrt(3/2 Pi':Pi') = 1/4", fabric_deviator(st.fabric), 0.25, 1e-15);
+  check.near("3D energy: 4 x 1/(2 kn) + 0.25/(2 kt)", st.potential_energy, 4 * 0.5 / 100.0 + 0.25 * 0.5 / 50.0, 1e-15);
+  check.equal_ints("3D one sliding contact", {st.n_sliding}, {1});
+  check.near("3D coordination 2C/N = 8/5", st.coordination, 1.6, 1e-15);
+  check.near("3D eigenvalues of diag(0.5, 0.25, 0.25) rotated",
+             norm(sym_eigenvalues(matmul(matmul(R, Mat3{0.5, 0, 0, 0, 0.25, 0, 0, 0, 0.25}), transpose(R))) -
+                  Vec3{{0.5, 0.25, 0.25}}),
+             0.0, 1e-14);
+
+  check.throws_with("3D: a face sphere without its image",
+                    [] {
+                      build_frame_topology<3>({1, 2, 3, 4, 5, 6, 7, 8, 9},
+                                              {{{0, 0, 0}}, {{1, 0, 0}}, {{0, 1, 0}}, {{1, 1, 0}}, {{0, 0, 1}},
+                                               {{1, 0, 1}}, {{0, 1, 1}}, {{1, 1, 1}}, {{0, 0.5, 0.5}}},
+                                              std::vector<double>(9, 0.1), {{1.0, 1.0, 1.0}}, 1e-12);
+                    },
+                    "unpaired frame particle id 9");
+  check.throws_with("3D: no corner",
+                    [] {
+                      build_frame_topology<3>({1, 2, 3, 4, 5, 6, 7, 8}, {{{0, 0.5, 0.5}}, {{1, 0.5, 0.5}}, {{0.5, 0, 0.5}},
+                                                                        {{0.5, 1, 0.5}}, {{0.5, 0.5, 0}}, {{0.5, 0.5, 1}},
+                                                                        {{0.2, 0.5, 0}}, {{0.2, 0.5, 1}}},
+                                              std::vector<double>(8, 0.1), {{1.0, 1.0, 1.0}}, 1e-12);
+                    },
+                    "no corner particle");
+}
 } // namespace
 
 int main()
 {
   Checker check("homogenisation");
+  check_3d(check);
   const FrameTopology<2> frame = small_frame();
 
   // Counter-clockwise order from corner (0,0): c00, bottom, c10, right, c11, top, c01, left.

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <cmath>
+#include <fstream>
 #include <functional>
+#include <map>
 #include <iostream>
 #include <stdexcept>
 #include <string>
@@ -77,3 +79,22 @@ private:
   std::string name_;
   int passed_ = 0, failed_ = 0;
 };
+
+/// `key value` lines of a file (build_frame.py statistics, make_lattice.py parameters).
+inline std::map<std::string, double> numbers_of(const std::string& path)
+{
+  std::ifstream in(path);
+  std::map<std::string, double> out;
+  std::string key, value;
+  while (in >> key >> value)
+    try
+    {
+      out[key] = std::stod(value);
+    }
+    catch (const std::exception&)
+    {
+    } // text values (file names) are not needed here
+  if (out.empty())
+    throw std::runtime_error("cannot read " + path);
+  return out;
+}

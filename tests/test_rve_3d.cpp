@@ -29,24 +29,6 @@ namespace
 {
 std::string template_file, packing;
 
-std::map<std::string, double> numbers_of(const std::string& path)
-{
-  std::ifstream in(path);
-  std::map<std::string, double> out;
-  std::string key, value;
-  while (in >> key >> value)
-    try
-    {
-      out[key] = std::stod(value);
-    }
-    catch (const std::exception&)
-    {
-    } // text values are not needed here
-  if (out.empty())
-    throw std::runtime_error("cannot read " + path);
-  return out;
-}
-
 /// An RVE instance of the 3D template on the packing, with extra variables.
 struct Rve3
 {
@@ -84,15 +66,7 @@ struct Rve3
 
 Mat3 rotation(const Vec3& axis, double degrees)
 {
-  const Vec3 n = (1.0 / norm(axis)) * axis;
-  const double t = degrees * M_PI / 180.0, c = std::cos(t), s = std::sin(t);
-  Mat3 Q;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      Q[3 * i + j] = (i == j ? c : 0.0) + (1.0 - c) * n[i] * n[j];
-  Q[1] -= s * n[2], Q[2] += s * n[1], Q[3] += s * n[2];
-  Q[5] -= s * n[0], Q[6] -= s * n[1], Q[7] += s * n[0];
-  return Q;
+  return rotation_matrix((degrees * M_PI / 180.0 / norm(axis)) * axis);
 }
 
 double max_abs(const Mat3& A)

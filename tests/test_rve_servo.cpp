@@ -230,25 +230,6 @@ void check_unbalanced(Checker& check)
   check.less("|sigma - sigma_LW| / |sigma_LW| < 1 %", rel(r.sigma, r.sigma_lw), 0.01);
 }
 
-/// `key value` lines of a file (build_frame.py statistics, make_lattice.py parameters).
-std::map<std::string, double> numbers_of(const std::string& path)
-{
-  std::ifstream in(path);
-  std::map<std::string, double> out;
-  std::string key, value;
-  while (in >> key >> value)
-    try
-    {
-      out[key] = std::stod(value);
-    }
-    catch (const std::exception&)
-    {
-    } // text values (file names) are not needed here
-  if (out.empty())
-    throw std::runtime_error("cannot read " + path);
-  return out;
-}
-
 /// One physical contact, one count: the RVE as built holds exactly the
 /// contacts of the periodic packing, counted independently by build_frame.py
 /// on the periodic packing (minimum image), and the fix's statistics on that

@@ -230,7 +230,8 @@ int run_restart()
 ///    equal build_frame_3d.py's;
 ///  * boundary stress (R6, R7) = Love-Weber (R8) = LIGGGHTS' own virial;
 ///  * Hill-Mandel (R10) on an increment;
-///  * objectivity under 10 degrees about an oblique axis (in 1-degree solves).
+///  * objectivity under 10 degrees about an oblique axis (in 1-degree solves);
+///  * locked inner rotations with the unbalanced-force criterion (R13).
 int run_random()
 {
   Checker check("rve_3d_random");
@@ -304,6 +305,15 @@ int run_random()
   const double rel_q = frobenius(rve.fix->result().sigma - expected) / frobenius(expected);
   std::cout << "  |sigma(QF) - Q sigma(F) Q^T| / |sigma| = " << rel_q << "\n";
   check.less("objective under 10 degrees about (1,-2,2): |sigma(QF) - Q sigma Q^T| / |sigma| < 2 %", rel_q, 0.02);
+
+  // Locked inner rotations and the unbalanced-force criterion (R13) in 3D.
+  Rve3 locked({{"rotation", "locked"}, {"relax", "unbalanced"}, {"relax_tol", "0.01"}});
+  locked.solve(identity<3>());
+  const Fix3::Result rl = locked.solve(F1);
+  check.near("locked: inner spheres never rotate (max |omega|)", rl.max_inner_omega, 0.0, 0.0);
+  check.less("relax unbalanced: I_uf <= 0.01 at convergence (R13)", rl.unbalanced, 0.01);
+  check.less("locked, I_uf: |sigma - sigma_LW| / |sigma_LW| < 1 %",
+             frobenius(rl.sigma - rl.sigma_lw) / frobenius(rl.sigma_lw), 0.01);
   return check.summary();
 }
 } // namespace

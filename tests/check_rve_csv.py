@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
 """Checks an rve.csv written by fe2dem-rve (stdlib only).
 
-Usage: check_rve_csv.py CSV PATH_TYPE PRESSURE ISOTROPIC_STEPS ROWS
+Usage: check_rve_csv.py CSV PATH_TYPE PRESSURE ISOTROPIC_STEPS ROWS [free_shear]
 Asserts the contract header, the row count, convergence of every row
 (r_a <= 1e-4), the agreement of boundary and Love-Weber stress (1 %), and
 that stress-controlled components hold the target within the tolerance.
 A 3D rve.csv (columns F11 ... F33) is recognised by its header; PATH_TYPE
-triaxial holds sigma11 = sigma22 = -p while F33 shortens.
+triaxial holds sigma11 = sigma22 = -p while F33 shortens. With free_shear,
+every shear stress of the stress-controlled rows must be zero to 1 % of p.
 """
 import csv
 import math
@@ -14,6 +15,7 @@ import sys
 
 path, kind, pressure = sys.argv[1], sys.argv[2], float(sys.argv[3])
 n_iso, rows_expected = int(sys.argv[4]), int(sys.argv[5])
+free_shear = len(sys.argv) > 6 and sys.argv[6] == "free_shear"
 with open(path) as f:
     dim = 3 if "F33" in f.readline().split(",") else 2
 comps = [f"{i}{j}" for i in range(1, dim + 1) for j in range(1, dim + 1)]
@@ -58,6 +60,11 @@ if kind in ("biaxial", "triaxial"):
                                 f"target {-pressure}")
     if not last[f"F{axial}"] < rows[0][f"F{axial}"] or not last[f"sigma{axial}"] < last["sigma11"]:
         failures.append("axial compression did not raise the axial stress above the lateral one")
+if free_shear:
+    for r in rows[1:]:
+        for ij in comps:
+            if ij[0] != ij[1] and abs(r[f"sigma{ij}"]) > 0.0101 * pressure:
+                failures.append(f"step {int(r['step'])}: free shear, sigma{ij} = {r[f'sigma{ij}']}")
 if kind == "shear" and not abs(last["sigma12"]) > 0:
     failures.append("no shear stress under simple shear")
 for msg in failures:

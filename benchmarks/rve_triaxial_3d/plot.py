@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """plot.py RVE_CSV PNG: deviatoric ratio q/p and volumetric strain against
 axial strain of a 3D triaxial rve.csv (axial = z; tension positive in the
-file, compression positive in the plot). Prints the peak and the small-strain
-Young's modulus and Poisson ratio from the first loading step."""
+file, compression positive in the plot). Prints the peak and, from the
+second loading step (which starts and ends at the lateral stress of the
+path, unlike the first, which starts from the isotropic stage's mean-stress
+state), the secant Young's modulus and Poisson ratio of that step."""
 import csv
 import math
 import sys
@@ -25,13 +27,14 @@ for r in rows[iso:]:
     ev.append(100 * (e_ax + e_lat))
     qp.append(q / p)
 k = max(range(len(qp)), key=lambda i: qp[i])
-r1 = rows[iso + 1]
-d_ax = -math.log(r1["F33"] / r0["F33"])
-d_lat = 0.5 * (math.log(r1["F11"] / r0["F11"]) + math.log(r1["F22"] / r0["F22"]))
-E = (-(r1["sigma33"] - r0["sigma33"])) / d_ax
+a, b = rows[iso + 1], rows[iso + 2]
+d_ax = -math.log(b["F33"] / a["F33"])
+d_lat = 0.5 * (math.log(b["F11"] / a["F11"]) + math.log(b["F22"] / a["F22"]))
+E = (-(b["sigma33"] - a["sigma33"])) / d_ax
 nu = d_lat / d_ax
-print(f"peak q/p {qp[k]:.4f} at axial strain {ea[k]:.2f} %; first step: E {E:.4g} Pa, nu {nu:.3f} "
-      f"(axial strain {100 * d_ax:.2f} %)")
+print(f"peak q/p {qp[k]:.4f} at axial strain {ea[k]:.2f} %; second loading step (axial strain "
+      f"{100 * d_ax:.3g} %, lateral stress {a['sigma11']:.4g} -> {b['sigma11']:.4g} Pa): "
+      f"E {E:.4g} Pa, nu {nu:.3f}")
 fig, (a1, a2) = plt.subplots(2, 1, figsize=(6, 7), sharex=True)
 a1.plot(ea, qp, "o-")
 a1.set_ylabel("q/p")

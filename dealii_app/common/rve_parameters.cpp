@@ -1,5 +1,7 @@
 #include "rve_parameters.h"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
@@ -102,6 +104,10 @@ void RveParameters::declare_parameters(dealii::ParameterHandler& prm)
                     "DEM steps between convergence checks (and C++ run chunk length).");
   prm.declare_entry("Step budget", "2000000", Integer(1),
                     "Largest number of DEM steps one RVE solve may take.");
+  prm.declare_entry("Template variables", "", Anything(),
+                    "Further variables of the template that no entry above sets, as "
+                    "'name value' pairs separated by commas, e.g. 'hertz 1, youngs 6.67e10' "
+                    "for the 3D template's Hertz contacts. Empty: none.");
   prm.leave_subsection();
 }
 
@@ -129,11 +135,40 @@ void RveParameters::parse_parameters(dealii::ParameterHandler& prm, const std::s
   step_budget = prm.get_integer("Step budget");
   membrane = prm.get("Frame membrane");
   max_overlap = prm.get_double("Max overlap");
+  const std::string extra = prm.get("Template variables");
   prm.leave_subsection();
+  template_variables = parse_template_variables(extra);
   require_positive("RVE", {{"Normal stiffness", kn}, {"Tangential stiffness", kt},
                            {"Time step", time_step}, {"Relaxation tolerance", relaxation_tolerance},
                            {"Servo tolerance", servo_tolerance}, {"Force gain", gain_a},
                            {"Moment gain", gain_m}, {"Max overlap", max_overlap}});
+}
+
+std::map<std::string, std::string> RveParameters::parse_template_variables(const std::string& text) const
+{
+  std::map<std::string, std::string> out;
+  std::stringstream items(text);
+  std::string item;
+  const RveSetup entries = setup("none"); // the variables the entries above set
+  while (std::getline(items, item, ','))
+  {
+    std::istringstream words(item);
+    std::string name, value, extra;
+    if (!(words >> name))
+      continue; // empty item (e.g. the empty default)
+    const bool name_ok = (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_') &&
+                         std::all_of(name.begin(), name.end(), [](char c) {
+                           return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+                         });
+    if (!name_ok || !(words >> value) || (words >> extra))
+      throw std::runtime_error("subsection RVE: 'Template variables': '" + item +
+                               "' is not a pair 'name value' (pairs separated by commas)");
+    if (entries.variables.count(name) || name == "rve_data" || name == "rve_vars")
+      throw std::runtime_error("subsection RVE: 'Template variables' sets '" + name +
+                               "', which an entry of subsection RVE sets; use that entry");
+    out[name] = value;
+  }
+  return out;
 }
 
 void RveParameters::check_files(const std::string& prm_file) const
@@ -166,6 +201,7 @@ RveSetup RveParameters::setup(const std::string& log_file) const
                  {"inner_start", inner_start},
                  {"membrane", membrane},
                  {"max_overlap", number(max_overlap)}});
+  s.variables.insert(template_variables.begin(), template_variables.end());
   return s;
 }
 } // namespace fe2dem

@@ -13,6 +13,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <initializer_list>
+#include <map>
 #include <string>
 #include <utility>
 
@@ -41,11 +42,15 @@ struct RveParameters
   unsigned int check_interval, step_budget;
   std::string membrane; ///< yes | no: frame membrane of fix rve/servo
   double max_overlap;   ///< largest overlap / smaller radius
+  /// Further template variables (entry 'Template variables'), e.g. {"hertz", "1"}.
+  std::map<std::string, std::string> template_variables;
 
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm, const std::string& base_dir);
   /// The RVE set-up these parameters describe.
   RveSetup setup(const std::string& log_file) const;
+  /// 'name value, name value' -> map. @throws std::runtime_error naming the entry and the pair.
+  std::map<std::string, std::string> parse_template_variables(const std::string& text) const;
   /// @throws std::runtime_error naming @p prm_file and the entry if Template or Packing files are missing.
   void check_files(const std::string& prm_file) const;
 };

@@ -287,8 +287,9 @@ FrameTopology<3> build_frame_3d(const std::vector<int>& tags, const std::vector<
   for (std::size_t i = 0; i < n; ++i)
     if (owner[i] < 0)
       throw std::runtime_error(describe(tags[i], X[i]) +
-                               " is a periodic image whose original is itself an image along "
-                               "another axis only; rebuild the frame with build_frame_3d.py");
+                               " is the periodic image of another frame particle but belongs to no "
+                               "complete group of images; check that 'cell' matches the packing or "
+                               "rebuild the frame with build_frame_3d.py");
   if (corner < 0)
     throw std::runtime_error("no corner particle with periodic images at +Lx, +Ly and +Lz (eight "
                              "images) in the frame group; check 'cell " + format(L[0]) + " " +

@@ -64,24 +64,18 @@ void write_particle_dump(const LAMMPS_NS::FixRveServo<dim>& fix, const std::stri
   check(out, pfile);
 
   // Only touching pairs: the compute also lists near neighbours.
-  auto distance = [](const Contact<dim>& c) {
-    if constexpr (dim == 2)
-      return std::hypot(c.xj[0] - c.xi[0], c.xj[1] - c.xi[1]);
-    else
-      return std::hypot(c.xj[0] - c.xi[0], c.xj[1] - c.xi[1], c.xj[2] - c.xi[2]);
-  };
   const std::string cfile = prefix + ".contacts";
   std::ofstream con = open(cfile);
   std::size_t n = 0;
   for (const Contact<dim>& c : fix.contacts())
-    n += distance(c) < c.ri + c.rj;
+    n += distance(c.xi, c.xj) < c.ri + c.rj;
   con << "ITEM: TIMESTEP\n" << timestep << "\nITEM: NUMBER OF ENTRIES\n" << n;
   bounds(con);
   con << (dim == 2 ? "ITEM: ENTRIES id1 id2 x1 y1 x2 y2 fn ft\n"
                    : "ITEM: ENTRIES id1 id2 x1 y1 z1 x2 y2 z2 fn ft\n");
   for (const Contact<dim>& c : fix.contacts())
   {
-    const double d = distance(c);
+    const double d = distance(c.xi, c.xj);
     if (!(d < c.ri + c.rj))
       continue;
     double fn = 0.0, ft = 0.0;

@@ -228,8 +228,6 @@ private:
   void begin_solve(const Tensor* F = nullptr);
   /// Targets of the frame for F_ after the frame was at @p F_from (servo moves: F_).
   void schedule_frame_move(const Tensor& F_from);
-  /// Rotation of the polar decomposition of F: 2D angle, 3D rotation vector (< pi).
-  static Rotation rotation_of(const Tensor& F);
   /// Kinetic energy of the inner particles; flags escape and blow-up.
   double check_particles();
   /// Contacts, stresses, statistics and servo residual into result_.
@@ -271,8 +269,7 @@ private:
   void add_affine_velocity();
   /// Velocity gradient of the frame's affine path over the next step of a move.
   Tensor affine_velocity_gradient() const;
-  /// F on the current move's path at s in [0, 1] (2D: linear; 3D: fe2dem::polar_path).
-  Tensor path_F(double s) const;
+
   void remove_affine_velocity();
 
   // --- frame membrane (fix_rve_servo_membrane.cpp) --------------------------
@@ -373,6 +370,7 @@ private:
   std::vector<Rotation> rot_start_, rot_target_;
   int move_steps_ = 0, move_done_ = 0;
   Tensor move_F_from_ = fe2dem::identity<dim>(); ///< F where the current move started (3D restart state)
+  fe2dem::PolarPath path_; ///< 3D: the path from move_F_from_ to F_ (derived, rebuilt on restart)
   Tensor affine_step_{};               ///< L dt of inner_start affine during the current move
   std::vector<Vector> affine_velocity_; ///< per local index, added this step
   Rotation affine_spin_{};

@@ -37,15 +37,6 @@ constexpr int spin_index(int c)
 {
   return dim == 2 ? 2 : c;
 }
-/// Distance between two atom positions in the first dim components.
-template <int dim>
-double distance(const double* a, const double* b)
-{
-  if constexpr (dim == 2)
-    return std::hypot(a[0] - b[0], a[1] - b[1]);
-  else
-    return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
-}
 /// The first dim components of an atom vector.
 template <int dim>
 fe2dem::Vec<dim> first(const double* a)
@@ -260,7 +251,7 @@ void FixRveServo<dim>::check_reference_overlaps()
   for (int i = 0; i < atom->nlocal; ++i)
     for (int j = i + 1; j < atom->nlocal; ++j)
     {
-      const double d = distance<dim>(x[i], x[j]);
+      const double d = fe2dem::distance(first<dim>(x[i]), first<dim>(x[j]));
       const double rel = (r[i] + r[j] - d) / std::min(r[i], r[j]);
       if (rel > max_overlap_)
       {
@@ -369,7 +360,7 @@ void FixRveServo<dim>::initial_integrate(int)
     ++move_done_;
   const double s = moving ? static_cast<double>(move_done_) / move_steps_ : 0.0;
   const double inv_t = moving ? 1.0 / (move_steps_ * dtv_) : 0.0;
-  // 3D: the frame follows the polar path F(s) (fe2dem::polar_path) plus its
+  // 3D: the frame follows the polar path F(s) (fe2dem::PolarPath) plus its
   // fluctuations interpolated linearly, and turns with the path's rotation
   // plus the servo rotation interpolated linearly,
   //   theta(s) = theta_F(F(s)) + theta_g(s).
@@ -385,10 +376,11 @@ void FixRveServo<dim>::initial_integrate(int)
   if constexpr (dim == 3)
     if (moving && move_done_ < move_steps_)
     {
-      F_path = path_F(s);
-      along_path = rotation_of(F_path);
-      rot_from = rotation_of(move_F_from_);
-      rot_to = rotation_of(F_);
+      Tensor R_path;
+      path_.at(s, F_path, R_path);
+      along_path = fe2dem::rotation_vector(R_path);
+      rot_from = path_.rotation_from;
+      rot_to = path_.rotation_to;
     }
   // frame_local_ was refreshed in the last post_force (after any atom sort).
   for (std::size_t q = 0; q < frame_.particles.size(); ++q)
@@ -520,7 +512,7 @@ void FixRveServo<dim>::add_affine_velocity()
 // The velocity gradient that moves a point of the frame's path from step
 // k = move_done_ to k + 1 exactly onto it. 2D: the path x(s) = (I + s D) x0,
 // linear in s = k/n, so L_k = (D/n) (I + (k/n) D)^-1 / dt. 3D: the polar
-// path F(s) (fe2dem::polar_path), L_k = (F(s_k+1) - F(s_k)) F(s_k)^-1 / dt.
+// path F(s) (fe2dem::PolarPath), L_k = (F(s_k+1) - F(s_k)) F(s_k)^-1 / dt.
 template <int dim>
 typename FixRveServo<dim>::Tensor FixRveServo<dim>::affine_velocity_gradient() const
 {
@@ -529,19 +521,10 @@ typename FixRveServo<dim>::Tensor FixRveServo<dim>::affine_velocity_gradient() c
            matmul(affine_step_, fe2dem::inverse(fe2dem::identity<dim>() + move_done_ * affine_step_));
   else
   {
-    const Tensor F0 = path_F(static_cast<double>(move_done_) / move_steps_);
-    const Tensor F1 = path_F(static_cast<double>(move_done_ + 1) / move_steps_);
+    const Tensor F0 = path_.F(static_cast<double>(move_done_) / move_steps_);
+    const Tensor F1 = path_.F(static_cast<double>(move_done_ + 1) / move_steps_);
     return (1.0 / dtv_) * matmul(F1 - F0, fe2dem::inverse(F0));
   }
-}
-
-template <int dim>
-typename FixRveServo<dim>::Tensor FixRveServo<dim>::path_F(double s) const
-{
-  if constexpr (dim == 3)
-    return s >= 1.0 ? F_ : fe2dem::polar_path(move_F_from_, F_, s);
-  else
-    return move_F_from_ + s * (F_ - move_F_from_);
 }
 
 template <int dim>

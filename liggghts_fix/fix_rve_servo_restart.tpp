@@ -102,5 +102,7 @@ void FixRveServo<dim>::restart(char* buf)
   for (int k = 0; k < dim; ++k)
     if (std::abs(frame_.L[k] - L_[k]) > 1e-12 * L_[k])
       error->fix_error(FLERR, this, "keyword 'cell' differs from the cell in the restart data");
+  if constexpr (dim == 3)
+    path_ = fe2dem::PolarPath(move_F_from_, F_); // derived from the restored ends
   restored_ = true;
 }

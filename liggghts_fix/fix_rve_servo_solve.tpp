@@ -63,7 +63,14 @@ void FixRveServo<dim>::schedule_frame_move(const Tensor& F_from)
   // Frame particles turn with the rigid rotation of F (2D polar angle, 3D
   // rotation vector of the polar rotation) plus the servo's rotation, so
   // that a rigid rotation leaves contacts unsheared.
-  const Rotation theta_F = rotation_of(F_);
+  Rotation theta_F;
+  if constexpr (dim == 2)
+    theta_F = {{std::atan2(F_[2] - F_[1], F_[0] + F_[3])}};
+  else
+  {
+    path_ = fe2dem::PolarPath(move_F_from_, F_);
+    theta_F = path_.rotation_to;
+  }
   double largest = 0.0;
   for (std::size_t q = 0; q < nq; ++q)
   {
@@ -284,7 +291,7 @@ std::string FixRveServo<dim>::describe_largest_overlap() const
   const fe2dem::Contact<dim>* c = nullptr;
   for (const fe2dem::Contact<dim>& k : contacts_)
   {
-    const double d = distance<dim>(k.xj.data(), k.xi.data());
+    const double d = fe2dem::distance(k.xi, k.xj);
     const double rel = (k.ri + k.rj - d) / std::min(k.ri, k.rj);
     if (rel > worst)
       worst = rel, c = &k;
@@ -342,15 +349,6 @@ double FixRveServo<dim>::servo_residual() const
   if (!(f_rms > 0.0))
     return std::numeric_limits<double>::infinity(); // no contact force to compare with yet
   return std::sqrt(sum / static_cast<double>(frame_.groups.size() + 1));
-}
-
-template <int dim>
-typename FixRveServo<dim>::Rotation FixRveServo<dim>::rotation_of(const Tensor& F)
-{
-  if constexpr (dim == 2)
-    return {{std::atan2(F[2] - F[1], F[0] + F[3])}};
-  else
-    return fe2dem::rotation_vector(fe2dem::polar_rotation(F));
 }
 
 // Step 4 of the servo: move each group along its net contact force (and

@@ -99,6 +99,12 @@ double spin_norm(const std::array<double, n>& a)
   else
     return norm(a);
 }
+/// |b - a| (std::hypot: no overflow, and the 2D results' bits of before).
+inline double distance(const Vec2& a, const Vec2& b) { return std::hypot(b[0] - a[0], b[1] - a[1]); }
+inline double distance(const Vec3& a, const Vec3& b)
+{
+  return std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
+}
 /// a x e3 for an in-plane vector a: rotates a by -90 degrees.
 inline Vec2 cross_e3(const Vec2& a) { return {{a[1], -a[0]}}; }
 inline Vec3 cross(const Vec3& a, const Vec3& b)
@@ -307,16 +313,42 @@ inline Vec3 rotation_vector(const Mat3& R)
 }
 
 /**
- * The deformation at s in [0, 1] on the path from F0 to F1 that turns with
- * the rotation (R(s) = exp(s log(R1 R0^T)) R0) and stretches linearly
- * (U(s) = U0 + s (U1 - U0)), F = R U: a rigid rotation stays rigid on the
- * way, unlike F0 + s (F1 - F0), which squeezes the plane normal to the axis.
+ * The path from F0 to F1 that turns with the rotation (R(s) = exp(s log(R1
+ * R0^T)) R0) and stretches linearly (U(s) = U0 + s (U1 - U0)), F = R U, for
+ * s in [0, 1]: a rigid rotation stays rigid on the way, unlike F0 + s (F1 -
+ * F0), which squeezes the plane normal to the axis. The polar decompositions
+ * of the ends are done once; a point of the path costs one Rodrigues
+ * rotation and two products.
  */
-inline Mat3 polar_path(const Mat3& F0, const Mat3& F1, double s)
+class PolarPath
 {
-  const Mat3 R0 = polar_rotation(F0), R1 = polar_rotation(F1);
-  const Mat3 U0 = matmul(transpose(R0), F0), U1 = matmul(transpose(R1), F1);
-  const Vec3 phi = rotation_vector(matmul(R1, transpose(R0)));
-  return matmul(matmul(rotation_matrix(s * phi), R0), U0 + s * (U1 - U0));
-}
+public:
+  PolarPath() = default;
+  PolarPath(const Mat3& F0, const Mat3& F1)
+    : F1_(F1), R0_(polar_rotation(F0)), U0_(matmul(transpose(R0_), F0))
+  {
+    const Mat3 R1 = polar_rotation(F1);
+    U1_ = matmul(transpose(R1), F1);
+    phi_ = rotation_vector(matmul(R1, transpose(R0_)));
+    rotation_from = rotation_vector(R0_);
+    rotation_to = rotation_vector(R1);
+  }
+  /// F(s) and its rotation R(s); F(1) is F1 exactly.
+  void at(double s, Mat3& F, Mat3& R) const
+  {
+    R = matmul(rotation_matrix(s * phi_), R0_);
+    F = s >= 1.0 ? F1_ : matmul(R, U0_ + s * (U1_ - U0_));
+  }
+  Mat3 F(double s) const
+  {
+    Mat3 F, R;
+    at(s, F, R);
+    return F;
+  }
+  Vec3 rotation_from{}, rotation_to{}; ///< rotation vectors of R0 and R1
+
+private:
+  Mat3 F1_ = identity<3>(), R0_ = identity<3>(), U0_ = identity<3>(), U1_ = identity<3>();
+  Vec3 phi_{};
+};
 } // namespace fe2dem

@@ -6,7 +6,8 @@ sphere: ``id type diameter density x y z [ix iy iz]``, orthogonal box) and
 builds the 3D frame of physics.md §2.1:
 
 * every particle is shifted periodically so that the corner particle (the one
-  closest to the box origin, or ``--corner-id``) sits at (0, 0, 0);
+  closest to the box origin whose three planes no other particle cuts all of,
+  or ``--corner-id``) sits at (0, 0, 0);
 * a particle whose sphere cuts the plane x_k = 0 (periodically) is a frame
   particle, written with x_k in (-r, r) plus its images at +L_k; cutting one
   plane gives a face pair, two planes an edge group of four images, three
@@ -104,36 +105,48 @@ def build(args):
         if 2.0 * r >= 0.5 * min(L):
             fail(f"{args.packing}:{a['line']}: atom {a['id']} has diameter {a['d']}, more than "
                  f"half the smallest cell side {min(L)}: the cell is too small for a frame.")
+    def classify(corner):
+        """Positions relative to @p corner and (inner, frame, atom cutting all three planes)."""
+        c0 = [atoms[corner][ax] for ax in "xyz"]
+        pos = [[wrap(a[ax] - c0[k], L[k]) for k, ax in enumerate("xyz")] for a in atoms]
+        pos[corner] = [0.0, 0.0, 0.0]
+        inner, frame, second_corner = [], [], None  # frame: (atom index, base position, cut axes)
+        for i, (x, r) in enumerate(zip(pos, rad)):
+            base, cuts = list(x), []
+            for k in range(3):
+                if x[k] < r:
+                    cuts.append(k)
+                elif x[k] > L[k] - r:
+                    base[k] = x[k] - L[k]
+                    cuts.append(k)
+            if i == corner:
+                cuts = [0, 1, 2]
+            elif len(cuts) == 3 and second_corner is None:
+                second_corner = i
+            (frame if cuts else inner).append((i, base, cuts))
+        return pos, inner, frame, second_corner
+
     if args.corner_id is not None:
         ids = [a["id"] for a in atoms]
         if args.corner_id not in ids:
             fail(f"{args.packing}: --corner-id {args.corner_id} is not an atom id of the packing.")
-        corner = ids.index(args.corner_id)
+        candidates = [ids.index(args.corner_id)]
     else:
+        # The particle nearest the box origin whose three planes no other particle
+        # cuts all of (large packings often have a second such particle).
         def dist0(a):
             return sum(min_image(a[ax] - lo[k], L[k]) ** 2 for k, ax in enumerate("xyz"))
-        corner = min(range(len(atoms)), key=lambda i: dist0(atoms[i]))
-    c0 = [atoms[corner][ax] for ax in "xyz"]
-    pos = [[wrap(a[ax] - c0[k], L[k]) for k, ax in enumerate("xyz")] for a in atoms]
-    pos[corner] = [0.0, 0.0, 0.0]
-
-    inner, frame = [], []  # frame: (atom index, base position, cut axes)
-    for i, (x, r) in enumerate(zip(pos, rad)):
-        base, cuts = list(x), []
-        for k in range(3):
-            if x[k] < r:
-                cuts.append(k)
-            elif x[k] > L[k] - r:
-                base[k] = x[k] - L[k]
-                cuts.append(k)
-        if i == corner:
-            cuts = [0, 1, 2]
-        elif len(cuts) == 3:
-            fail(f"{args.packing}:{atoms[i]['line']}: atom {atoms[i]['id']} cuts all three "
-                 "planes x = 0, y = 0, z = 0 like the corner particle "
-                 f"{atoms[corner]['id']}; a frame has one corner: choose another --corner-id "
-                 "or regenerate the packing.")
-        (frame if cuts else inner).append((i, base, cuts))
+        candidates = sorted(range(len(atoms)), key=lambda i: dist0(atoms[i]))
+    for corner in candidates:
+        pos, inner, frame, second = classify(corner)
+        if second is None:
+            break
+    else:
+        how = ("choose another --corner-id or regenerate the packing" if args.corner_id is not None
+               else "no particle of the packing can be the corner; regenerate the packing")
+        fail(f"{args.packing}:{atoms[second]['line']}: atom {atoms[second]['id']} cuts all three "
+             "planes x = 0, y = 0, z = 0 like the corner particle "
+             f"{atoms[corner]['id']}; a frame has one corner: {how}.")
     frame.sort(key=lambda f: (f[0] != corner, atoms[f[0]]["id"]))
 
     rho = [a["rho"] for a in atoms]
@@ -246,7 +259,8 @@ def main(argv=None):
                     "without .periodic.data)")
     ap.add_argument("--outdir", help="output folder (default: the packing's folder)")
     ap.add_argument("--corner-id", type=int, help="atom id of the corner particle "
-                    "(default: the one nearest the box origin)")
+                    "(default: the one nearest the box origin that no other particle "
+                    "shares the corner with)")
     ap.add_argument("--max-overlap", type=float, default=0.1,
                     help="largest accepted overlap / smaller radius (default 0.1)")
     ap.add_argument("--quiet", action="store_true")

@@ -51,9 +51,14 @@ private:
    * Mixed control: finds the F components @p comps (row-major indices) so
    * that the same Cauchy components reach @p targets, by simultaneous
    * secant steps with one slope per component. @return RVE solves used.
+   * @param F_moved_elsewhere F differs from the last solve in components
+   *        other than @p comps (a new axial stretch): the first trial's
+   *        stress change then comes mostly from those, so the slopes are
+   *        only updated from the second trial on.
    */
   unsigned int control_components(Matrix& F, const std::vector<int>& comps,
-                                  const std::vector<double>& targets, const std::string& what);
+                                  const std::vector<double>& targets, const std::string& what,
+                                  bool F_moved_elsewhere = false);
 
   const Parameters& prm_;
   ServoRve<dim> rve_;

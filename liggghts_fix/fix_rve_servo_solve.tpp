@@ -359,14 +359,22 @@ double FixRveServo<dim>::servo_residual() const
 // The fixed gain g_a = gain_a dt^2/M overshoots for a pair held by many
 // stiff contacts (measured: a period-2 oscillation of a_+ + a_- at
 // constant amplitude). Each pair therefore scales its gain by a factor in
-// (0, 1] that halves whenever its residual changes sign and recovers by
+// [1e-200, 1] that halves whenever its residual changes sign and recovers by
 // 20 % per iteration otherwise, per force component and for the moment.
 template <int dim>
 void FixRveServo<dim>::apply_servo_correction()
 {
   const double dt2 = dtv_ * dtv_;
+  // The factor never drops below min_factor. Without a floor, a balanced
+  // component whose round-off changes sign halved it to 0.0 (about 1075 net
+  // halvings); 1.2 x 0 never recovers, so a group that later lost its
+  // balance stayed frozen (small_3d at 7 % axial strain: r_a stuck at 0.02
+  // for 1e6 steps). Any factor below about 1e-16 already moves a group by
+  // less than the round-off of its position, so the floor changes no result
+  // that was not frozen, and 1.2^2525 brings it back to 1 within a solve.
+  static constexpr double min_factor = 1e-200;
   auto adapt = [](double& factor, double now, double before) {
-    factor = now * before < 0.0 ? 0.5 * factor : std::min(1.0, 1.2 * factor);
+    factor = now * before < 0.0 ? std::max(0.5 * factor, min_factor) : std::min(1.0, 1.2 * factor);
   };
   for (std::size_t e = 0; e < frame_.groups.size(); ++e)
   {

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""plot.py RVE_CSV PNG: deviatoric ratio q/p and volumetric strain against
+"""plot.py RVE_CSV PNG [TITLE]: deviatoric ratio q/p and volumetric strain against
 axial strain of a 3D triaxial rve.csv (axial = z; tension positive in the
 file, compression positive in the plot). Prints the peak and, from the
 second loading step (which starts and ends at the lateral stress of the
@@ -43,5 +43,5 @@ a2.plot(ea, ev, "o-")
 a2.set_ylabel("volumetric strain (%) (compaction > 0)")
 a2.set_xlabel("axial strain (%)")
 a2.grid(True)
-fig.suptitle("3D RVE small_3d, triaxial at 100 kPa (linear contacts, mu = 0.5)")
+fig.suptitle(sys.argv[3] if len(sys.argv) > 3 else "3D RVE small_3d, triaxial at 100 kPa (linear contacts, mu = 0.5)")
 fig.savefig(sys.argv[2], dpi=120)

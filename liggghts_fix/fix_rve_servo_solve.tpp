@@ -368,10 +368,11 @@ void FixRveServo<dim>::apply_servo_correction()
   // The factor never drops below min_factor. Without a floor, a balanced
   // component whose round-off changes sign halved it to 0.0 (about 1075 net
   // halvings); 1.2 x 0 never recovers, so a group that later lost its
-  // balance stayed frozen (small_3d at 7 % axial strain: r_a stuck at 0.02
-  // for 1e6 steps). Any factor below about 1e-16 already moves a group by
-  // less than the round-off of its position, so the floor changes no result
-  // that was not frozen, and 1.2^2525 brings it back to 1 within a solve.
+  // balance stayed frozen (small_3d at 6 % axial strain: r_a stuck at 0.02
+  // for 1e6 steps). With gain dt^2/M ~ 1e-5 m/N, forces below 1 N and
+  // positions ~1e-2 m, a factor below about 1e-13 moves a group by less than
+  // the round-off of its position, so the floor changes no result that was
+  // not frozen, and 1.2^2525 brings it back to 1 within a solve.
   static constexpr double min_factor = 1e-200;
   auto adapt = [](double& factor, double now, double before) {
     factor = now * before < 0.0 ? std::max(0.5 * factor, min_factor) : std::min(1.0, 1.2 * factor);

@@ -43,6 +43,8 @@ for r in rows:
         failures.append(f"step {s}: boundary vs Love-Weber stress differ by {num/den:.3%}")
     if r["coordination"] <= 0 or not 0 < r["packing_fraction"] < 1:
         failures.append(f"step {s}: implausible coordination/packing fraction")
+    if "fabric_deviator" not in r or not 0.0 <= r["fabric_deviator"] < 1.0:
+        failures.append(f"step {s}: fabric_deviator missing or outside [0, 1)")
     if r["F_check_error"] > 1e-12:
         failures.append(f"step {s}: F_check differs from F by {r['F_check_error']}")
 last = rows[-1]

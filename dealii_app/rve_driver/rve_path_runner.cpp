@@ -1,5 +1,6 @@
 #include "rve_path_runner.h"
 
+#include "rve_homogenisation.h"
 #include "template_check.h"
 
 #include <mpi.h>
@@ -87,7 +88,7 @@ void RvePathRunner<dim>::open_output()
         csv_ << ',' << t << i << j;
   csv_ << ",residual,ekin_epot,servo_iterations,dem_steps,coordination,anisotropy,"
           "packing_fraction,wall_s,mechanical_coordination,contacts,sliding_contacts,"
-          "max_overlap,F_check_error,stress_iterations,membrane_steps\n";
+          "max_overlap,F_check_error,stress_iterations,membrane_steps,fabric_deviator\n";
   csv_ << std::setprecision(12);
 }
 
@@ -104,7 +105,8 @@ void RvePathRunner<dim>::write_row(const Result& r, unsigned int stress_iteratio
        << ',' << r.packing_fraction << ',' << MPI_Wtime() - t_start_ << ','
        << r.contacts.mechanical_coordination << ',' << r.contacts.n_contacts << ','
        << r.contacts.n_sliding << ',' << r.contacts.max_overlap << ',' << F_check_error << ','
-       << stress_iterations << ',' << r.membrane_steps << '\n';
+       << stress_iterations << ',' << r.membrane_steps << ','
+       << fe2dem::fabric_deviator(r.contacts.fabric) << '\n';
   csv_.flush();
   const char* axial_name = dim == 2 ? "22" : "33";
   std::cout << "step " << std::setw(3) << step_ << "  F11 " << std::setw(9) << r.F[0] << "  F"

@@ -5,12 +5,17 @@ ratio of benchmarks/rve_triaxial_3d/hertz_lsyf_1000.prm against [LSYF] §3.2
 
 From the second triaxial step (it starts and ends at the lateral stress, as in
 plot.py): E = -d sigma33 / d eps_axial, nu = d eps_lateral / d eps_axial
-(logarithmic strains). Tolerances: 10 % on E and 0.05 on nu, because the
-packing is [LSYF]-like, not theirs (porosity 0.346 against 0.338, uniform
-diameters, 1000 spheres); measured 2026-11-23: E = 595 MPa, nu = 0.214.
-The 4096-sphere lsyf_4096 of the same protocol gives 469 MPa and 0.279, so
-this guards the Hertz RVE pipeline against errors larger than the packing
-scatter; it does not claim [LSYF]'s value to 10 % for every packing.
+(logarithmic strains).
+
+Tolerances: E within 40 % and nu within 0.1 of [LSYF]. They are the spread
+of our own packings, not a claim about this one: four packings of the same
+protocol (2026-11-23) gave E = 595, 473 and 387 MPa (1000 spheres, seeds
+10007 = the shipped lsyf_1000, 10037, 10039) and 469 MPa (lsyf_4096), nu =
+0.214, 0.260, 0.275 and 0.279, i.e. on average about 20 % softer than
+[LSYF]'s denser (porosity 0.338 against 0.343-0.348), better coordinated
+(5.6 against 5.1-5.3) assembly. So this test catches gross errors of the
+Hertz RVE pipeline (units, contact law, homogenisation, stress control),
+not errors of a few per cent; the lattice tests (rve_3d_lattice_*) do that.
 """
 import csv
 import math
@@ -29,10 +34,10 @@ p = -(b["sigma11"] + b["sigma22"] + b["sigma33"]) / 3
 print(f"E = {E / 1e6:.1f} MPa (LSYF 584), nu = {nu:.3f} (LSYF 0.2), lateral stress {b['sigma11']:.0f} Pa, "
       f"mean stress {p:.0f} Pa, coordination {b['coordination']:.3f}, solid fraction {b['packing_fraction']:.4f}")
 failures = []
-if not abs(E - 584e6) <= 0.10 * 584e6:
-    failures.append(f"E = {E:.4g} Pa is not within 10 % of 584 MPa")
-if not abs(nu - 0.2) <= 0.05:
-    failures.append(f"nu = {nu:.4f} is not within 0.05 of 0.2")
+if not abs(E - 584e6) <= 0.40 * 584e6:
+    failures.append(f"E = {E:.4g} Pa is not within 40 % of 584 MPa")
+if not abs(nu - 0.2) <= 0.1:
+    failures.append(f"nu = {nu:.4f} is not within 0.1 of 0.2")
 for f in failures:
     print("FAIL:", f)
 print("PASS" if not failures else f"{len(failures)} failure(s)")

@@ -133,7 +133,7 @@ def build(args):
         candidates = [ids.index(args.corner_id)]
     else:
         # The particle nearest the box origin whose three planes no other particle
-        # cuts all of (large packings often have a second such particle).
+        # cuts all of (the nearest one shared its corner in a 1000-sphere packing).
         def dist0(a):
             return sum(min_image(a[ax] - lo[k], L[k]) ** 2 for k, ax in enumerate("xyz"))
         candidates = sorted(range(len(atoms)), key=lambda i: dist0(atoms[i]))

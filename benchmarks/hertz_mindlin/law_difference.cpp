@@ -99,6 +99,7 @@ int main(int argc, char** argv)
   if (argc < 6 || argc % 2 == 1)
   {
     std::fprintf(stderr, "usage: law_difference TEMPLATE PACKING_PREFIX LAMBDA PRE_STRAIN STRAIN [NAME VALUE]...\n");
+    MPI_Finalize();
     return 2;
   }
   try
@@ -151,7 +152,7 @@ int main(int argc, char** argv)
       // sign of Love-Weber: sigma = (1/V) sum f_on_i (x) (x_j - x_i), tension positive
       extra = extra + (r / volume) * outer(s1.tangential_force, s2.branch);
     }
-    std::printf("solve_1_dem_steps %ld\n", steps1);
+    std::printf("dem_steps_of_the_solve_before_the_increment %ld\n", steps1);
     std::printf("contacts_before %zu after %zu sticking_both %d sliding %d\n", before.size(), after.size(),
                 sticking, sliding);
     std::printf("mean_abs_kt_change %.4e\n", sticking ? ratio_sum / sticking : 0.0);

@@ -7,29 +7,22 @@ Writes OUT_DIR/{no_frame,unpaired,overlap}.{rve.data,vars}:
   unpaired  one bottom-edge frame particle removed: its top image has no pair;
   overlap   an inner particle moved onto another one.
 """
-import os
 import sys
 
+from rve_data_copy import RveData
+
 src, out = sys.argv[1], sys.argv[2]
-os.makedirs(out, exist_ok=True)
-lines = open(src + ".rve.data").read().splitlines()
-vars_text = open(src + ".vars").read()
-first = next(i for i, l in enumerate(lines) if l.startswith("Atoms")) + 2
-atoms = [l.split() for l in lines[first:] if l.strip()]
+data = RveData(src)
+atoms = data.atoms
 
 
 def write(name, rows):
-    head = [l if not l.endswith(" atoms") else f"{len(rows)} atoms" for l in lines[:first]]
-    with open(f"{out}/{name}.rve.data", "w") as f:
-        f.write("\n".join(head + [" ".join(r) for r in rows]) + "\n")
-    with open(f"{out}/{name}.vars", "w") as f:
-        f.write(vars_text)
+    data.write(out, name, rows)
 
 
 write("no_frame", [[r[0], "1"] + r[2:] for r in atoms])
 frame = [r for r in atoms if r[1] == "2"]
-Lx = float(next(l for l in vars_text.splitlines() if "rve_Lx" in l).split()[-1])
-Ly = float(next(l for l in vars_text.splitlines() if "rve_Ly" in l).split()[-1])
+Lx, Ly = data.cell_side("x"), data.cell_side("y")
 
 
 def has_image(r, dx, dy):

@@ -8,24 +8,18 @@ Writes OUT_DIR/{unpaired_3d,no_corner_3d}.{rve.data,vars}:
 build_frame_3d.py writes the inner particles first, then the corner's eight
 images, then each frame particle's images, original first.
 """
-import os
 import sys
 
+from rve_data_copy import RveData
+
 src, out = sys.argv[1], sys.argv[2]
-os.makedirs(out, exist_ok=True)
-lines = open(src + ".rve.data").read().splitlines()
-vars_text = open(src + ".vars").read()
-first = next(i for i, l in enumerate(lines) if l.startswith("Atoms")) + 2
-atoms = [l.split() for l in lines[first:] if l.strip()]
-L = [float(next(l for l in vars_text.splitlines() if f"rve_L{a} " in l).split()[-1]) for a in "xyz"]
+data = RveData(src)
+atoms = data.atoms
+L = [data.cell_side(a) for a in "xyz"]
 
 
 def write(name, rows):
-    head = [l if not l.endswith(" atoms") else f"{len(rows)} atoms" for l in lines[:first]]
-    with open(f"{out}/{name}.rve.data", "w") as f:
-        f.write("\n".join(head + [" ".join(r) for r in rows]) + "\n")
-    with open(f"{out}/{name}.vars", "w") as f:
-        f.write(vars_text)
+    data.write(out, name, rows)
 
 
 frame = [r for r in atoms if r[1] == "2"]

@@ -16,6 +16,7 @@
 //
 // Usage: law_difference TEMPLATE PACKING_PREFIX LAMBDA PRE_STRAIN STRAIN [NAME VALUE]...
 // (NAME VALUE: further template variables, e.g. hertz 1 dt 5e-8)
+#include "contact_law.h"
 #include "servo_rve.h"
 
 #include <mpi.h>
@@ -130,6 +131,7 @@ int main(int argc, char** argv)
 
     // stress carried by k_t(delta2)/k_t(delta1) - 1 on the contacts that stick at both ends
     const double mu = std::stod(setup.variables.count("mu") ? setup.variables.at("mu") : "0.5");
+    const fe2dem::ContactLaw coulomb{0.0, 0.0, mu}; // only its sliding test
     Mat3 extra{};
     int sticking = 0, sliding = 0;
     double ratio_sum = 0.0;
@@ -139,8 +141,10 @@ int main(int argc, char** argv)
       if (it == before.end())
         continue;
       const ContactState& s1 = it->second;
-      const bool slides = fe2dem::norm(s2.tangential_force) >= (1.0 - 1e-6) * mu * fe2dem::norm(s2.normal_force) ||
-                          fe2dem::norm(s1.tangential_force) >= (1.0 - 1e-6) * mu * fe2dem::norm(s1.normal_force);
+      const auto slides_in = [&coulomb](const ContactState& c) {
+        return coulomb.sliding(fe2dem::norm(c.normal_force), fe2dem::norm(c.tangential_force));
+      };
+      const bool slides = slides_in(s1) || slides_in(s2);
       if (slides)
       {
         ++sliding;

@@ -5,8 +5,9 @@ Usage: make_bad_packings_3d.py SOURCE_PREFIX OUT_DIR
 Writes OUT_DIR/{unpaired_3d,no_corner_3d}.{rve.data,vars}:
   unpaired_3d   the +L image of one face particle removed: its original has no pair;
   no_corner_3d  the corner particle and its seven images removed.
-build_frame_3d.py writes the inner particles first, then the corner's eight
-images, then each frame particle's images, original first.
+build_frame_3d.py gives ids to the inner particles first, then the corner's
+eight images, then each frame particle's images, original first (the lines
+are in spatial order, so the rows are taken in id order here).
 """
 import sys
 
@@ -22,7 +23,7 @@ def write(name, rows):
     data.write(out, name, rows)
 
 
-frame = [r for r in atoms if r[1] == "2"]
+frame = sorted((r for r in atoms if r[1] == "2"), key=lambda r: int(r[0]))
 pos = [[float(v) for v in r[4:7]] for r in frame]
 
 

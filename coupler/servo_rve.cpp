@@ -106,8 +106,10 @@ void ServoRve<dim>::open_instance(const std::string& restart_file)
   if (instance_->lammps_dimension() != dim)
     throw std::runtime_error("RVE template '" + setup_.template_file + "' sets 'dimension " +
                              std::to_string(instance_->lammps_dimension()) + "' but a " +
-                             std::to_string(dim) + "D RVE was asked for (fe2dem-rve: 'Dimension' in "
-                             "subsection Path; rve_setup_" + std::to_string(dim) + "d.liggghts)");
+                             std::to_string(dim) + "D RVE was asked for ('Dimension' in subsection "
+                             "Geometry of fe2dem, in subsection Path of fe2dem-rve; the " +
+                             std::to_string(dim) + "D template is rve_setup_" + std::to_string(dim) +
+                             "d.liggghts)");
   fix_ = &instance_->fix<Fix>(setup_.fix_id);
   budget_ = fix_->max_steps();
   limited_ = false; // a new instance has the template's budget

@@ -3,10 +3,16 @@
 
 Usage: check_macro.py patch SUMMARY [TOL]
        check_macro.py elastic SUMMARY MU LAMBDA AXIAL_STRAIN STEPS MAX_ITERATIONS
-patch:   the affine field is reproduced (affine_deviation <= TOL, default 1e-8).
-elastic: plane-strain neo-Hookean block, free sides: sigma22 and J - 1 of
-         every load step within 1e-3 relative of the closed form, sigma11 ~ 0,
-         and every step converged by (M9) within the iteration budget.
+       check_macro.py triaxial SUMMARY MU LAMBDA PRESSURE AXIAL_STRAIN ISO_STEPS STEPS MAX_ITERATIONS
+patch:    the affine field is reproduced (affine_deviation <= TOL, default 1e-8).
+elastic:  plane-strain neo-Hookean block, free sides: sigma22 and J - 1 of
+          every load step within 1e-3 relative of the closed form, sigma11 ~ 0,
+          and every step converged by (M9) within the iteration budget.
+triaxial: 3D neo-Hookean block, follower pressure on the sides (and the top in
+          stage 1): stage 1 F = l I with sigma = -p (fraction of the stage);
+          stage 2 F = diag(l1, l2, l1), l2 = l_ic (1 - axial strain), sigma11 =
+          sigma33 = -p. sigma11, sigma22, sigma33, J_rel and the stress ratio
+          of every step within 1e-3 relative of the closed form.
 """
 import csv
 import math
@@ -20,6 +26,56 @@ if mode == "patch":
     for r in rows:
         if not float(r["affine_deviation"]) <= tol:
             failures.append(f"step {r['step']}: affine deviation {r['affine_deviation']} > {tol}")
+elif mode == "triaxial":
+    mu, lam, p, strain, iso_steps, steps, max_it = map(float, sys.argv[3:10])
+
+    def cauchy(l1, l2):
+        """sigma11 (= sigma33) and sigma22 of F = diag(l1, l2, l1)."""
+        J = l1 * l1 * l2
+        return ((mu * (l1 * l1 - 1) + lam * math.log(J)) / J,
+                (mu * (l2 * l2 - 1) + lam * math.log(J)) / J)
+
+    def solve(f, target):
+        """l in [0.5, 2] with f(l) = target, f increasing (bisection)."""
+        lo, hi = 0.5, 2.0
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if f(mid) < target else (lo, mid)
+        return 0.5 * (lo + hi)
+
+    def close(name, got, want, scale):
+        if abs(got - want) > 1e-3 * scale:
+            failures.append(f"step {r['step']}: {name} {got}, closed form {want}")
+
+    if len(rows) != int(iso_steps + steps):
+        failures.append(f"{len(rows)} rows, expected {int(iso_steps + steps)}")
+    l_ic = solve(lambda l: cauchy(l, l)[0], -p)
+    for r in rows:
+        stage = int(r["stage"])
+        if stage == 1:
+            frac = int(r["step"]) / iso_steps
+            l = solve(lambda l: cauchy(l, l)[0], -frac * p)
+            l1 = l2 = l
+            j_rel = l ** 3 - 1
+        else:
+            l2 = l_ic * (1 - float(r["axial_strain"]))
+            l1 = solve(lambda l: cauchy(l, l2)[0], -p)
+            j_rel = l1 * l1 * l2 / l_ic ** 3 - 1
+        s11, s22 = cauchy(l1, l2)
+        scale = max(abs(s11), abs(s22))
+        close("sigma11", float(r["sigma11_mean"]), s11, scale)
+        close("sigma33", float(r["sigma33_mean"]), s11, scale)
+        close("sigma22", float(r["sigma22_mean"]), s22, scale)
+        close("J_rel", float(r["J_rel_mean"]), j_rel, max(abs(j_rel), 1e-12))
+        ratio = abs(s11 - s22) / abs(s11 + s22)
+        close("stress ratio", float(r["stress_ratio_mean"]), ratio, max(ratio, 0.1))
+        if not int(r["macro_iterations"]) < max_it:
+            failures.append(f"step {r['step']}: no (M9) convergence within the budget")
+        print(f"step {r['step']} (stage {stage}): sigma11 {float(r['sigma11_mean']):.3f} vs {s11:.3f}, "
+              f"sigma22 {float(r['sigma22_mean']):.3f} vs {s22:.3f}, J_rel {float(r['J_rel_mean']):.6g} "
+              f"vs {j_rel:.6g}, DR iterations {r['macro_iterations']}")
+    if stage == 2 and abs(float(rows[-1]["axial_strain"]) - strain) > 1e-12:
+        failures.append(f"final axial strain {rows[-1]['axial_strain']}, expected {strain}")
 else:
     mu, lam, strain, steps, max_it = map(float, sys.argv[3:8])
     if abs(float(rows[-1]["axial_strain"]) - strain) > 1e-12:

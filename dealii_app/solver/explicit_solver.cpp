@@ -118,7 +118,8 @@ void ExplicitSolver<dim>::open_output_files(const std::string& checkpoint)
   summary_ << "step,stage,time,axial_strain,stress_ratio_mean,stress_ratio_min,stress_ratio_max,"
               "sigma11_mean,sigma22_mean,J_rel_mean,coordination_mean,anisotropy_mean,"
               "macro_iterations,dem_steps,wall_s,top_force,affine_deviation,rve_solves,"
-              "rve_rank_max_s,rve_rank_mean_s\n"
+              "rve_rank_max_s,rve_rank_mean_s"
+           << (dim == 3 ? ",sigma33_mean\n" : "\n")
            << summary_rows_ << std::flush;
   const std::string history = prm_.output_directory + "/history.h5";
   if (checkpoint.empty())
@@ -138,8 +139,15 @@ void ExplicitSolver<dim>::make_grid()
 {
   const Geometry& g = prm_.geometry;
   if (g.mesh_file.empty())
-    GridGenerator::subdivided_hyper_rectangle(triangulation_, {g.nx, g.ny}, Point<dim>(),
-                                              Point<dim>(g.width, g.height));
+  {
+    const unsigned int cells[3] = {g.nx, g.ny, g.nz};
+    const double size[3] = {g.width, g.height, g.depth};
+    std::vector<unsigned int> repetitions(dim);
+    Point<dim> far;
+    for (unsigned int d = 0; d < dim; ++d)
+      repetitions[d] = cells[d], far[d] = size[d];
+    GridGenerator::subdivided_hyper_rectangle(triangulation_, repetitions, Point<dim>(), far);
+  }
   else
     read_mesh_file();
   if (g.distortion > 0.0)
@@ -161,11 +169,12 @@ void ExplicitSolver<dim>::mark_box_faces()
       if (cell->face(f)->at_boundary())
       {
         const Point<dim> c = cell->face(f)->center();
-        const unsigned int id = c[0] < lo_[0] + tol   ? BoxFace::left
-                                : c[0] > hi_[0] - tol ? BoxFace::right
-                                : c[1] < lo_[1] + tol ? BoxFace::bottom
-                                : c[1] > hi_[1] - tol ? BoxFace::top
-                                                      : 4u; // other boundary
+        unsigned int id = other_boundary_id(dim);
+        for (unsigned int d = dim; d-- > 0;) // x faces first, as BoxFace numbers them
+          if (c[d] < lo_[d] + tol)
+            id = 2 * d; // left, bottom, back
+          else if (c[d] > hi_[d] - tol)
+            id = 2 * d + 1; // right, top, front
         cell->face(f)->set_boundary_id(static_cast<types::boundary_id>(id));
       }
 }
@@ -188,8 +197,9 @@ void ExplicitSolver<dim>::read_mesh_file()
     std::ostringstream why;
     e.print_info(why);
     throw std::runtime_error("subsection Geometry: 'Mesh file' = '" + file +
-                             "' could not be read as a " + std::to_string(dim) +
-                             "D quadrilateral mesh: " + why.str());
+                             "' could not be read as a " +
+                             (dim == 2 ? "2D quadrilateral" : "3D hexahedral") + " mesh ('Dimension' = " +
+                             std::to_string(dim) + " in subsection Geometry): " + why.str());
   }
 }
 
@@ -332,4 +342,5 @@ unsigned int ExplicitSolver<dim>::relax_load_step()
 }
 
 template class ExplicitSolver<2>;
+template class ExplicitSolver<3>;
 } // namespace fe2dem::macro

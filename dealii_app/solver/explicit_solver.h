@@ -1,8 +1,9 @@
 /**
  * @file explicit_solver.h
  * The macro solver of `fe2dem`: total Lagrangian, Q1 elements with 2x2
- * Gauss points, lumped mass (M5) and dynamic relaxation (M3)-(M9) per load
- * step, in the style of the deal.II tutorials (step-18, step-44).
+ * (3D: 2x2x2) Gauss points, lumped mass (M5) and dynamic relaxation
+ * (M3)-(M9) per load step, in the style of the deal.II tutorials (step-18,
+ * step-44). Instantiated for dim = 2 (plane strain) and 3.
  *
  * Its seams: the constitutive response comes from a Material (material.h:
  * the built-in neo-Hookean law or one RVE per quadrature point), the
@@ -86,14 +87,17 @@ private:
   /// What one converged step writes: means over the IPs, cell averages, records.
   struct StepStatistics
   {
-    double ratio_mean = 0.0, ratio_min = 0.0, ratio_max = 0.0; ///< |σ11-σ22|/|σ11+σ22|
-    double s11_mean = 0.0, s22_mean = 0.0, j_rel_mean = 0.0;   ///< Cauchy stress, (J-J_ic)/J_ic
+    double ratio_mean = 0.0, ratio_min = 0.0, ratio_max = 0.0; ///< stress_ratio()
+    double s11_mean = 0.0, s22_mean = 0.0, s33_mean = 0.0;     ///< Cauchy stress (s33: 3D)
+    double j_rel_mean = 0.0;                                   ///< (J-J_ic)/J_ic
     double coordination_mean = 0.0, anisotropy_mean = 0.0;
-    /// Per cell, the average over its quadrature points (VTU cell data).
-    dealii::Vector<double> s11, s22, ratio, j_rel, coordination, anisotropy, eq_strain;
+    /// Per cell, the average over its quadrature points (VTU cell data; s33 in 3D).
+    dealii::Vector<double> s11, s22, s33, ratio, j_rel, coordination, anisotropy, eq_strain;
     std::vector<IpRecord<dim>> records; ///< one per IP, for history.h5
   };
   void output_step(unsigned int iterations);
+  /// 2D: |σ11-σ22|/|σ11+σ22|; 3D: (σ_max-σ_min)/|σ_max+σ_min| of the principal stresses.
+  static double stress_ratio(const dealii::Tensor<2, dim>& sigma);
   StepStatistics gather_step_statistics() const;
   void write_summary_row(const StepStatistics& stats, unsigned int iterations, double axial,
                          const dealii::Utilities::MPI::MinMaxAvg& rve_seconds);

@@ -171,4 +171,5 @@ std::string ExplicitSolver<dim>::resume_from_checkpoint()
 }
 
 template class ExplicitSolver<2>;
+template class ExplicitSolver<3>;
 } // namespace fe2dem::macro

@@ -169,4 +169,5 @@ void ExplicitSolver<dim>::apply_boundary_values()
 }
 
 template class ExplicitSolver<2>;
+template class ExplicitSolver<3>;
 } // namespace fe2dem::macro

@@ -2,10 +2,12 @@
 // particle dumps (architecture.md contracts).
 #include "explicit_solver.h"
 
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/numerics/data_out.h>
 
 #include <mpi.h>
 
+#include <array>
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
@@ -30,16 +32,35 @@ void ExplicitSolver<dim>::output_step(unsigned int iterations)
   write_vtu(stats);
 }
 
+// 2D: |s11 - s22| / |s11 + s22| ([LBS]). 3D: (s_max - s_min) / |s_max + s_min| of
+// the principal stresses, sin of the mobilised friction angle; in a
+// triaxial test, |s_axial - s_lateral| / |s_axial + s_lateral| as in 2D.
+template <int dim>
+double ExplicitSolver<dim>::stress_ratio(const Tensor<2, dim>& sigma)
+{
+  if constexpr (dim == 2)
+    return sigma[0][0] + sigma[1][1] != 0.0
+             ? std::abs((sigma[0][0] - sigma[1][1]) / (sigma[0][0] + sigma[1][1]))
+             : 0.0;
+  else
+  {
+    const std::array<double, dim> s = eigenvalues(symmetrize(sigma)); // descending
+    return s[0] + s[dim - 1] != 0.0 ? std::abs((s[0] - s[dim - 1]) / (s[0] + s[dim - 1])) : 0.0;
+  }
+}
+
 template <int dim>
 typename ExplicitSolver<dim>::StepStatistics ExplicitSolver<dim>::gather_step_statistics() const
 {
   const unsigned int n_cells = triangulation_.n_active_cells();
   const unsigned int per_cell = quadrature_.size();
   StepStatistics st;
-  for (auto* v : {&st.s11, &st.s22, &st.ratio, &st.j_rel, &st.coordination, &st.anisotropy, &st.eq_strain})
+  for (auto* v : {&st.s11, &st.s22, &st.s33, &st.ratio, &st.j_rel, &st.coordination, &st.anisotropy,
+                  &st.eq_strain})
     v->reinit(n_cells);
   st.records.resize(ip_.size());
-  double r_min = 1e300, r_max = -1e300, r_sum = 0.0, s11_sum = 0.0, s22_sum = 0.0, j_sum = 0.0;
+  double r_min = 1e300, r_max = -1e300, r_sum = 0.0, s11_sum = 0.0, s22_sum = 0.0, s33_sum = 0.0;
+  double j_sum = 0.0;
   double coord_sum = 0.0, aniso_sum = 0.0;
   for (unsigned int p = 0; p < ip_.size(); ++p)
   {
@@ -48,9 +69,7 @@ typename ExplicitSolver<dim>::StepStatistics ExplicitSolver<dim>::gather_step_st
     const Tensor<2, dim> F = h.F;
     const double J = determinant(F);
     const Tensor<2, dim> sigma = h.P * transpose(F) / J;
-    const double r = sigma[0][0] + sigma[1][1] != 0.0
-                       ? std::abs((sigma[0][0] - sigma[1][1]) / (sigma[0][0] + sigma[1][1]))
-                       : 0.0;
+    const double r = stress_ratio(sigma);
     const double jr = (J - h.J_ic) / h.J_ic;
     r_min = std::min(r_min, r);
     r_max = std::max(r_max, r);
@@ -62,6 +81,11 @@ typename ExplicitSolver<dim>::StepStatistics ExplicitSolver<dim>::gather_step_st
     aniso_sum += h.statistics.anisotropy;
     st.s11[c] += sigma[0][0] / per_cell;
     st.s22[c] += sigma[1][1] / per_cell;
+    if constexpr (dim == 3)
+    {
+      s33_sum += sigma[2][2];
+      st.s33[c] += sigma[2][2] / per_cell;
+    }
     st.ratio[c] += r / per_cell;
     st.j_rel[c] += jr / per_cell;
     st.coordination[c] += h.statistics.coordination / per_cell;
@@ -84,6 +108,7 @@ typename ExplicitSolver<dim>::StepStatistics ExplicitSolver<dim>::gather_step_st
   st.ratio_max = r_max;
   st.s11_mean = s11_sum / n;
   st.s22_mean = s22_sum / n;
+  st.s33_mean = s33_sum / n;
   st.j_rel_mean = j_sum / n;
   st.coordination_mean = coord_sum / n;
   st.anisotropy_mean = aniso_sum / n;
@@ -104,7 +129,10 @@ void ExplicitSolver<dim>::write_summary_row(const StepStatistics& st, unsigned i
       << ',' << st.anisotropy_mean << ',' << iterations << ',' << cost_in_step_.dem_steps << ',' << wall
       << ',' << load_case_->top_reaction(f_int_) << ','
       << load_case_->affine_deviation(load_fraction_, displacement_) << ',' << cost_in_step_.solves
-      << ',' << rve_seconds.max << ',' << rve_seconds.avg << '\n';
+      << ',' << rve_seconds.max << ',' << rve_seconds.avg;
+  if (dim == 3) // new columns go at the end (architecture.md)
+    row << ',' << st.s33_mean;
+  row << '\n';
   summary_rows_ += row.str();
   summary_ << row.str() << std::flush;
   pcout_ << "stage " << stage_ << " step " << std::setw(3) << step_ << "  axial strain "
@@ -128,6 +156,8 @@ void ExplicitSolver<dim>::write_vtu(const StepStatistics& st)
                            DataOut<dim>::type_dof_data, vec);
   data_out.add_data_vector(st.s11, "sigma11");
   data_out.add_data_vector(st.s22, "sigma22");
+  if (dim == 3)
+    data_out.add_data_vector(st.s33, "sigma33");
   data_out.add_data_vector(st.ratio, "stress_ratio");
   data_out.add_data_vector(st.j_rel, "J_rel");
   data_out.add_data_vector(st.coordination, "coordination");
@@ -166,4 +196,5 @@ void ExplicitSolver<dim>::write_particle_dumps() const
 }
 
 template class ExplicitSolver<2>;
+template class ExplicitSolver<3>;
 } // namespace fe2dem::macro

@@ -194,4 +194,5 @@ void HistoryWriter::append(int step, double axial_strain, const std::vector<IpRe
 }
 
 template void HistoryWriter::append(int, double, const std::vector<IpRecord<2>>&);
+template void HistoryWriter::append(int, double, const std::vector<IpRecord<3>>&);
 } // namespace fe2dem::macro

@@ -73,33 +73,46 @@ double LoadCase<dim>::top_reaction(const Vector<double>& f_int) const
 }
 
 template <int dim>
-BiaxialLoadCase<dim>::BiaxialLoadCase(const DofMap<dim>& dofs, double h0, const Loading& loading,
-                                      const std::string& mesh_file)
+CompressionLoadCase<dim>::CompressionLoadCase(const DofMap<dim>& dofs, double h0, const Loading& loading,
+                                              const std::string& mesh_file)
   : LoadCase<dim>(dofs, h0), loading_(loading)
 {
-  unsigned int n[4] = {0, 0, 0, 0};
+  constexpr unsigned int n_faces = 2 * dim;
+  unsigned int n[n_faces] = {};
+  bool corner_0 = dim == 2, corner_x = dim == 2; // the 3D corners of the constraints
   for (types::global_dof_index i = 0; i < dofs.position.size(); ++i)
     if (dofs.component[i] == 0)
-      for (unsigned int b = 0; b < 4; ++b)
+    {
+      for (unsigned int b = 0; b < n_faces; ++b)
         n[b] += dofs.on(i, BoxFace(b));
-  const char* names[4] = {"left", "right", "bottom", "top"};
-  for (int k = 0; k < 4; ++k)
-    if (n[k] < 2)
-      throw std::runtime_error("'Boundary' = biaxial needs a rectangular specimen, but the mesh has " +
-                               std::to_string(n[k]) + " node(s) on the " + names[k] +
-                               " edge of its bounding box" +
-                               (mesh_file.empty() ? "" : " (mesh file '" + mesh_file + "')"));
+      if (dim == 3 && dofs.on(i, bottom) && dofs.on(i, back))
+      {
+        corner_0 |= dofs.on(i, left);
+        corner_x |= dofs.on(i, right);
+      }
+    }
+  const char* names[6] = {"left", "right", "bottom", "top", "back", "front"};
+  const std::string test = dim == 2 ? "'Boundary' = biaxial needs a rectangular specimen"
+                                    : "'Boundary' = triaxial needs a box-shaped specimen";
+  const std::string file = mesh_file.empty() ? "" : " (mesh file '" + mesh_file + "')";
+  for (unsigned int k = 0; k < n_faces; ++k)
+    if (n[k] < (dim == 2 ? 2u : 4u))
+      throw std::runtime_error(test + ", but the mesh has " + std::to_string(n[k]) + " node(s) on the " +
+                               names[k] + (dim == 2 ? " edge" : " face") + " of its bounding box" + file);
+  if (!corner_0 || !corner_x)
+    throw std::runtime_error(test + ", but the mesh has no node at the bottom-back corner at the " +
+                             (corner_0 ? "highest" : "lowest") + " x of its bounding box" + file);
 }
 
 template <int dim>
-unsigned int BiaxialLoadCase<dim>::steps_in_stage(unsigned int stage) const
+unsigned int CompressionLoadCase<dim>::steps_in_stage(unsigned int stage) const
 {
   return stage == 1 ? loading_.isotropic_steps : loading_.steps;
 }
 
 template <int dim>
-typename LoadCase<dim>::Constraints BiaxialLoadCase<dim>::constraints(unsigned int stage,
-                                                                      double fraction) const
+typename LoadCase<dim>::Constraints CompressionLoadCase<dim>::constraints(unsigned int stage,
+                                                                          double fraction) const
 {
   const DofMap<dim>& d = this->dofs_;
   typename LoadCase<dim>::Constraints values;
@@ -108,7 +121,12 @@ typename LoadCase<dim>::Constraints BiaxialLoadCase<dim>::constraints(unsigned i
     const unsigned int c = d.component[i];
     if (d.on(i, bottom) && c == 1)
       values[i] = 0.0;
-    if (d.on(i, bottom) && d.on(i, left) && c == 0)
+    if constexpr (dim == 2)
+    {
+      if (d.on(i, bottom) && d.on(i, left) && c == 0)
+        values[i] = 0.0;
+    }
+    else if (d.on(i, bottom) && d.on(i, back) && ((d.on(i, left) && c != 1) || (d.on(i, right) && c == 2)))
       values[i] = 0.0;
     if (stage == 2 && d.on(i, top) && c == 1) // displacement control from the height h_ic
       values[i] = this->u_top_ic_ - fraction * loading_.axial_strain * this->h_ic_;
@@ -116,13 +134,15 @@ typename LoadCase<dim>::Constraints BiaxialLoadCase<dim>::constraints(unsigned i
   return values;
 }
 
-// Follower pressure on the left and right edges (and the top in stage 1):
-// -p n da on the current edge, lumped half to each node (exact for
-// straight Q1 edges).
+// Follower pressure on the sides (and the top in stage 1): -p n da on the
+// current boundary. 2D: lumped half to each node of a straight Q1 edge
+// (exact). 3D: the consistent nodal forces of a bilinear face,
+// -p int N_a (x_xi x x_eta) dxi deta, by 2x2 Gauss points (exact: the
+// integrand is at most quadratic in each of xi, eta).
 template <int dim>
-void BiaxialLoadCase<dim>::external_force(unsigned int stage, double fraction,
-                                          const DoFHandler<dim>& dof_handler, const Vector<double>& u,
-                                          Vector<double>& f) const
+void CompressionLoadCase<dim>::external_force(unsigned int stage, double fraction,
+                                              const DoFHandler<dim>& dof_handler, const Vector<double>& u,
+                                              Vector<double>& f) const
 {
   f = 0.0;
   const double p = (stage == 1 ? fraction : 1.0) * loading_.pressure;
@@ -135,22 +155,55 @@ void BiaxialLoadCase<dim>::external_force(unsigned int stage, double fraction,
       if (!face->at_boundary())
         continue;
       const auto id = face->boundary_id();
-      const bool is_left = id == left, is_right = id == right, is_top = stage == 1 && id == top;
-      if (!is_left && !is_right && !is_top)
+      const bool is_side = id == left || id == right || (dim == 3 && (id == back || id == front));
+      if (!is_side && !(stage == 1 && id == top))
         continue;
-      Point<dim> x[2];
-      for (unsigned int v = 0; v < 2; ++v)
+      if constexpr (dim == 2)
+      {
+        const bool is_left = id == left, is_right = id == right, is_top = id == top;
+        Point<dim> x[2];
+        for (unsigned int v = 0; v < 2; ++v)
+          for (unsigned int c = 0; c < dim; ++c)
+            x[v][c] = face->vertex(v)[c] + u[face->vertex_dof_index(v, c)];
+        const Tensor<1, dim> d = x[1] - x[0];
+        Tensor<1, dim> n;
+        n[0] = d[1];
+        n[1] = -d[0];
+        if ((is_left && n[0] > 0.0) || (is_right && n[0] < 0.0) || (is_top && n[1] < 0.0))
+          n *= -1.0; // outward
+        for (unsigned int v = 0; v < 2; ++v)
+          for (unsigned int c = 0; c < dim; ++c)
+            f[face->vertex_dof_index(v, c)] -= 0.5 * p * n[c];
+      }
+      else
+        add_face_pressure(face, static_cast<BoxFace>(id), p, u, f);
+    }
+}
+
+template <int dim>
+template <typename FaceIterator>
+void CompressionLoadCase<dim>::add_face_pressure(const FaceIterator& face, BoxFace id, double p,
+                                                 const Vector<double>& u, Vector<double>& f) const
+{
+  // vertices in deal.II's lexicographic face order: (0,0), (1,0), (0,1), (1,1)
+  Tensor<1, dim> x[4];
+  for (unsigned int v = 0; v < 4; ++v)
+    for (unsigned int c = 0; c < dim; ++c)
+      x[v][c] = face->vertex(v)[c] + u[face->vertex_dof_index(v, c)];
+  Tensor<1, dim> outward; // of the bounding-box face
+  outward[id / 2] = id % 2 == 0 ? -1.0 : 1.0;
+  const double sign = cross_product_3d(x[1] - x[0] + x[3] - x[2], x[2] - x[0] + x[3] - x[1]) * outward > 0.0 ? 1.0 : -1.0;
+  const double g[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
+  for (const double xi : g)
+    for (const double eta : g)
+    {
+      const Tensor<1, dim> x_xi = (1.0 - eta) * (x[1] - x[0]) + eta * (x[3] - x[2]);
+      const Tensor<1, dim> x_eta = (1.0 - xi) * (x[2] - x[0]) + xi * (x[3] - x[1]);
+      const Tensor<1, dim> n_da = 0.25 * sign * cross_product_3d(x_xi, x_eta); // Gauss weight 1/4
+      const double N[4] = {(1.0 - xi) * (1.0 - eta), xi * (1.0 - eta), (1.0 - xi) * eta, xi * eta};
+      for (unsigned int v = 0; v < 4; ++v)
         for (unsigned int c = 0; c < dim; ++c)
-          x[v][c] = face->vertex(v)[c] + u[face->vertex_dof_index(v, c)];
-      const Tensor<1, dim> d = x[1] - x[0];
-      Tensor<1, dim> n;
-      n[0] = d[1];
-      n[1] = -d[0];
-      if ((is_left && n[0] > 0.0) || (is_right && n[0] < 0.0) || (is_top && n[1] < 0.0))
-        n *= -1.0; // outward
-      for (unsigned int v = 0; v < 2; ++v)
-        for (unsigned int c = 0; c < dim; ++c)
-          f[face->vertex_dof_index(v, c)] -= 0.5 * p * n[c];
+          f[face->vertex_dof_index(v, c)] -= p * N[v] * n_da[c];
     }
 }
 
@@ -178,7 +231,7 @@ typename LoadCase<dim>::Constraints AffineLoadCase<dim>::constraints(unsigned in
   const Tensor<2, dim> F = F_at(fraction);
   typename LoadCase<dim>::Constraints values;
   for (types::global_dof_index i = 0; i < d.position.size(); ++i)
-    if ((d.faces[i] & 0xFu) != 0) // on an edge of the bounding box (ids 0-3)
+    if ((d.faces[i] & ((1u << 2 * dim) - 1)) != 0) // on a face of the bounding box (ids 0 .. 2 dim - 1)
     {
       const Point<dim>& X = d.position[i];
       values[i] = (F * X - X)[d.component[i]];
@@ -205,14 +258,19 @@ double AffineLoadCase<dim>::affine_deviation(double fraction, const Vector<doubl
 template <int dim>
 std::unique_ptr<LoadCase<dim>> make_load_case(const DofMap<dim>& dofs, double h0, const Parameters& prm)
 {
-  if (prm.loading.boundary == Loading::Boundary::biaxial)
-    return std::make_unique<BiaxialLoadCase<dim>>(dofs, h0, prm.loading, prm.geometry.mesh_file);
+  if (prm.loading.boundary != Loading::Boundary::affine)
+    return std::make_unique<CompressionLoadCase<dim>>(dofs, h0, prm.loading, prm.geometry.mesh_file);
   return std::make_unique<AffineLoadCase<dim>>(dofs, h0, prm.loading);
 }
 
 template struct DofMap<2>;
+template struct DofMap<3>;
 template class LoadCase<2>;
-template class BiaxialLoadCase<2>;
+template class LoadCase<3>;
+template class CompressionLoadCase<2>;
+template class CompressionLoadCase<3>;
 template class AffineLoadCase<2>;
+template class AffineLoadCase<3>;
 template std::unique_ptr<LoadCase<2>> make_load_case(const DofMap<2>&, double, const Parameters&);
+template std::unique_ptr<LoadCase<3>> make_load_case(const DofMap<3>&, double, const Parameters&);
 } // namespace fe2dem::macro

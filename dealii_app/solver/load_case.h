@@ -3,8 +3,10 @@
  * What the boundary of the macro specimen does in each load step: the
  * prescribed displacements, the external forces and the measures reported
  * per step. Load cases act on boundary ids, which fe2dem sets from the
- * faces of the mesh's bounding box (2D: 0 left, 1 right, 2 bottom, 3 top,
- * as GridGenerator::subdivided_hyper_rectangle with colorize numbers them).
+ * faces of the mesh's bounding box (0 left, 1 right, 2 bottom, 3 top, in 3D
+ * 4 back and 5 front, as GridGenerator::subdivided_hyper_rectangle with
+ * colorize numbers them; 2 dim for any other boundary face). y is the
+ * vertical axis in both dimensions.
  *
  * A run has two stages: stage 1 (e.g. isotropic compression; 0 steps if
  * the case has none) and stage 2; each load step ends at a load fraction
@@ -25,14 +27,19 @@
 
 namespace fe2dem::macro
 {
-/// Boundary ids of the bounding-box faces (2D).
+/// Boundary ids of the bounding-box faces (x-, x+, y-, y+, z-, z+).
 enum BoxFace : unsigned int
 {
   left = 0,
   right = 1,
   bottom = 2,
-  top = 3
+  top = 3,
+  back = 4,
+  front = 5
 };
+
+/// Boundary id of boundary faces that lie on no face of the bounding box.
+constexpr unsigned int other_boundary_id(int dim) { return 2 * dim; }
 
 /// Every dof's node and where it lies, fixed for a run.
 template <int dim>
@@ -88,23 +95,32 @@ protected:
 };
 
 /**
- * [LBS] §3.1: bottom edge fixed vertically, bottom-left node horizontally;
- * stage 1 ramps a follower pressure on the left, right and top edges;
- * stage 2 keeps it on the sides and moves the top edge down to the axial
- * strain of the height after stage 1.
+ * The compression test: biaxial in 2D ([LBS] §3.1), triaxial in 3D.
+ * The bottom face is fixed vertically; rigid motions are removed by the
+ * bottom-left node in x (2D), or by the bottom corner at the lowest x and z
+ * in x and z and the bottom corner at the highest x and lowest z in z (3D:
+ * both lie on the plane z = z_min, so a homogeneous deformation with
+ * diagonal F satisfies them). Stage 1 ramps a follower pressure on the
+ * sides (x faces, and z faces in 3D) and the top; stage 2 keeps it on the
+ * sides and moves the top down to the axial strain of the height after
+ * stage 1.
  */
 template <int dim>
-class BiaxialLoadCase : public LoadCase<dim>
+class CompressionLoadCase : public LoadCase<dim>
 {
 public:
-  /// @throws std::runtime_error if an edge of the bounding box has fewer than 2 nodes.
-  BiaxialLoadCase(const DofMap<dim>& dofs, double h0, const Loading& loading, const std::string& mesh_file);
+  /// @throws std::runtime_error if a face of the bounding box has too few nodes.
+  CompressionLoadCase(const DofMap<dim>& dofs, double h0, const Loading& loading, const std::string& mesh_file);
   unsigned int steps_in_stage(unsigned int stage) const override;
   typename LoadCase<dim>::Constraints constraints(unsigned int stage, double fraction) const override;
   void external_force(unsigned int stage, double fraction, const dealii::DoFHandler<dim>& dofs,
                       const dealii::Vector<double>& u, dealii::Vector<double>& f) const override;
 
 private:
+  /// 3D: adds the nodal forces of pressure @p p on the current @p face (of box face @p id) to @p f.
+  template <typename FaceIterator>
+  void add_face_pressure(const FaceIterator& face, BoxFace id, double p, const dealii::Vector<double>& u,
+                         dealii::Vector<double>& f) const;
   const Loading& loading_;
 };
 

@@ -17,27 +17,35 @@ using dealii::Patterns::Selection;
 void Geometry::declare_parameters(dealii::ParameterHandler& prm)
 {
   prm.enter_subsection("Geometry");
+  prm.declare_entry("Dimension", "2", Integer(2, 3),
+                    "2: plane strain on quadrilaterals; 3: hexahedra. y is the vertical (loading) "
+                    "axis in both; in 3D z is the depth.");
   prm.declare_entry("Width", "10", Double(0.0), "Specimen width (x), > 0 [length unit of the problem].");
   prm.declare_entry("Height", "20", Double(0.0), "Specimen height (y), > 0.");
+  prm.declare_entry("Depth", "10", Double(0.0), "3D: specimen depth (z), > 0.");
   prm.declare_entry("Cells x", "1", Integer(1), "Q1 cells across the width.");
   prm.declare_entry("Cells y", "1", Integer(1), "Q1 cells along the height.");
+  prm.declare_entry("Cells z", "1", Integer(1), "3D: Q1 cells along the depth.");
   prm.declare_entry("Distortion", "0", Double(0.0, 0.4),
                     "Random shift of interior nodes as a fraction of the cell size (patch tests).");
   prm.declare_entry("Mesh file", "", Anything(),
-                    "Optional quadrilateral mesh instead of the rectangle of Width, Height and "
-                    "Cells: Gmsh (.msh) or UCD (.inp, .ucd), relative to the parameter file. "
-                    "Biaxial loading finds the left, right, bottom and top edges on its "
-                    "bounding box.");
+                    "Optional quadrilateral (2D) or hexahedral (3D) mesh instead of the box of "
+                    "Width, Height (Depth) and Cells: Gmsh (.msh) or UCD (.inp, .ucd), relative "
+                    "to the parameter file. Biaxial and triaxial loading find the faces of the "
+                    "specimen on its bounding box.");
   prm.leave_subsection();
 }
 
 void Geometry::parse_parameters(dealii::ParameterHandler& prm, const std::string& base)
 {
   prm.enter_subsection("Geometry");
+  dimension = prm.get_integer("Dimension");
   width = prm.get_double("Width");
   height = prm.get_double("Height");
+  depth = prm.get_double("Depth");
   nx = prm.get_integer("Cells x");
   ny = prm.get_integer("Cells y");
+  nz = prm.get_integer("Cells z");
   distortion = prm.get_double("Distortion");
   mesh_file = prm.get("Mesh file");
   prm.leave_subsection();
@@ -54,8 +62,8 @@ void Geometry::parse_parameters(dealii::ParameterHandler& prm, const std::string
       throw std::runtime_error("subsection Geometry: 'Mesh file' = '" + given + "': cannot read '" +
                                mesh_file + "' (paths are relative to the parameter file)");
   }
-  if (!(width > 0.0 && height > 0.0))
-    throw std::runtime_error("subsection Geometry: 'Width' and 'Height' must be > 0");
+  if (!(width > 0.0 && height > 0.0 && depth > 0.0))
+    throw std::runtime_error("subsection Geometry: 'Width', 'Height' and 'Depth' must be > 0");
 }
 
 void MaterialParameters::declare_parameters(dealii::ParameterHandler& prm)
@@ -146,40 +154,67 @@ void DynamicRelaxation::parse_parameters(dealii::ParameterHandler& prm)
 void Loading::declare_parameters(dealii::ParameterHandler& prm)
 {
   prm.enter_subsection("Loading");
-  prm.declare_entry("Boundary", "biaxial", Selection("biaxial|affine"),
-                    "biaxial ([LBS] 3.1): bottom edge fixed vertically, bottom-left node fixed; "
-                    "stage 1 ('Isotropic steps') ramps 'Pressure' normal to the current left, "
-                    "right and top edges; stage 2 ('Load steps') keeps it on the sides and "
+  prm.declare_entry("Boundary", "biaxial", Selection("biaxial|triaxial|affine"),
+                    "biaxial (2D, [LBS] 3.1): bottom edge fixed vertically, bottom-left node "
+                    "fixed; stage 1 ('Isotropic steps') ramps 'Pressure' normal to the current "
+                    "left, right and top edges; stage 2 ('Load steps') keeps it on the sides and "
                     "pushes the top edge down to 'Axial strain' of the height after stage 1. "
+                    "triaxial (3D): the same with the four side faces (x and z) under the "
+                    "pressure; bottom face fixed vertically, its corner at the lowest x and z "
+                    "fixed in x and z, its corner at the highest x and lowest z fixed in z. "
                     "affine: every boundary node at (F - I) X (patch test).");
   prm.declare_entry("Pressure", "0", Double(0.0),
-                    "biaxial: confining follower pressure [force/length in 2D], >= 0.");
-  prm.declare_entry("Isotropic steps", "0", Integer(0), "biaxial: load steps of stage 1.");
+                    "biaxial/triaxial: confining follower pressure [force/length in 2D, "
+                    "force/area in 3D], >= 0.");
+  prm.declare_entry("Isotropic steps", "0", Integer(0), "biaxial/triaxial: load steps of stage 1.");
   prm.declare_entry("Axial strain", "0.01", Double(-0.5, 0.5),
-                    "biaxial: final compressive strain of stage 2 (positive = compression).");
-  prm.declare_entry("Affine F", "1 0 0 1", Anything(), "affine: F11 F12 F21 F22 at the last step.");
+                    "biaxial/triaxial: final compressive strain of stage 2 (positive = compression).");
+  prm.declare_entry("Affine F", "1 0 0 1", Anything(),
+                    "affine: F at the last step, row by row: F11 F12 F21 F22 in 2D, "
+                    "F11 F12 F13 F21 ... F33 in 3D (read only for 'Boundary' = affine).");
   prm.declare_entry("Load steps", "5", Integer(1),
-                    "biaxial: load steps of stage 2; affine: load steps (linear ramp).");
+                    "biaxial/triaxial: load steps of stage 2; affine: load steps (linear ramp).");
   prm.leave_subsection();
 }
 
-void Loading::parse_parameters(dealii::ParameterHandler& prm)
+void Loading::parse_parameters(dealii::ParameterHandler& prm, const unsigned int dim)
 {
   prm.enter_subsection("Loading");
-  boundary = prm.get("Boundary") == "biaxial" ? Boundary::biaxial : Boundary::affine;
+  const std::string name = prm.get("Boundary");
+  boundary = name == "biaxial" ? Boundary::biaxial : name == "triaxial" ? Boundary::triaxial : Boundary::affine;
   pressure = prm.get_double("Pressure");
   isotropic_steps = prm.get_integer("Isotropic steps");
   axial_strain = prm.get_double("Axial strain");
   const std::string affine_text = prm.get("Affine F");
   steps = prm.get_integer("Load steps");
   prm.leave_subsection();
+  if (boundary == Boundary::biaxial && dim == 3)
+    throw std::runtime_error("subsection Loading: 'Boundary' = biaxial is the 2D test, but "
+                             "subsection Geometry has 'Dimension' = 3: use 'Boundary' = triaxial");
+  if (boundary == Boundary::triaxial && dim == 2)
+    throw std::runtime_error("subsection Loading: 'Boundary' = triaxial is the 3D test, but "
+                             "subsection Geometry has 'Dimension' = 2: use 'Boundary' = biaxial "
+                             "or set 'Dimension' = 3");
+  affine_F.fill(0.0);
+  for (unsigned int i = 0; i < dim; ++i)
+    affine_F[(dim + 1) * i] = 1.0;
+  if (boundary != Boundary::affine)
+    return;
   std::istringstream s(affine_text);
-  double f[4];
+  const unsigned int n = dim * dim;
+  unsigned int read = 0;
+  while (read < n && s >> affine_F[read])
+    ++read;
   std::string extra;
-  if (!(s >> f[0] >> f[1] >> f[2] >> f[3]) || (s >> extra) || !(f[0] * f[3] - f[1] * f[2] > 0.0))
-    throw std::runtime_error("subsection Loading: 'Affine F' = '" + affine_text +
-                             "' must be four numbers F11 F12 F21 F22 with det F > 0");
-  affine_F = {{f[0], f[1], f[2], f[3]}};
+  const double det = dim == 2 ? affine_F[0] * affine_F[3] - affine_F[1] * affine_F[2]
+                              : affine_F[0] * (affine_F[4] * affine_F[8] - affine_F[5] * affine_F[7]) -
+                                  affine_F[1] * (affine_F[3] * affine_F[8] - affine_F[5] * affine_F[6]) +
+                                  affine_F[2] * (affine_F[3] * affine_F[7] - affine_F[4] * affine_F[6]);
+  if (read != n || (s >> extra) || !(det > 0.0))
+    throw std::runtime_error("subsection Loading: 'Affine F' = '" + affine_text + "' must be " +
+                             (dim == 2 ? "four numbers F11 F12 F21 F22"
+                                       : "nine numbers F11 F12 F13 F21 F22 F23 F31 F32 F33") +
+                             " (Dimension = " + std::to_string(dim) + ") with det F > 0");
 }
 
 void ParticleDumps::declare_parameters(dealii::ParameterHandler& prm)
@@ -331,7 +366,7 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
   geometry.parse_parameters(prm, base.string());
   material.parse_parameters(prm);
   relaxation.parse_parameters(prm);
-  loading.parse_parameters(prm);
+  loading.parse_parameters(prm, geometry.dimension);
   particle_dumps.parse_parameters(prm);
   checkpoint.parse_parameters(prm);
   parallel.parse_parameters(prm);

@@ -16,11 +16,15 @@
 
 namespace fe2dem::macro
 {
-/// subsection Geometry: a subdivided rectangle [0, width] x [0, height], or a mesh file.
+/**
+ * subsection Geometry: a subdivided box [0, width] x [0, height] (x [0, depth]
+ * in 3D), or a mesh file. y is the vertical (loading) axis in both dimensions.
+ */
 struct Geometry
 {
-  double width, height;
-  unsigned int nx, ny;
+  unsigned int dimension; ///< 2 (plane strain, quadrilaterals) or 3 (hexahedra)
+  double width, height, depth;
+  unsigned int nx, ny, nz;
   double distortion;     ///< random interior node shift / cell size (patch tests)
   std::string mesh_file; ///< Gmsh (.msh) or UCD (.inp, .ucd) file; empty: the rectangle
   static void declare_parameters(dealii::ParameterHandler& prm);
@@ -59,16 +63,19 @@ struct Loading
 {
   enum class Boundary
   {
-    biaxial,
+    biaxial,  ///< 2D compression test (load_case.h: CompressionLoadCase)
+    triaxial, ///< 3D compression test (the same load case in 3D)
     affine
   } boundary;                 ///< the load case (load_case.h)
-  double pressure;            ///< biaxial: confining follower pressure [force/length]
-  unsigned int isotropic_steps; ///< biaxial stage 1: pressure on left, right and top
-  double axial_strain;        ///< biaxial stage 2: compressive strain of h_ic
-  std::array<double, 4> affine_F; ///< affine: F row-major {F11, F12, F21, F22} at the last step
-  unsigned int steps;         ///< biaxial stage 2 / affine: load steps
+  double pressure;            ///< biaxial/triaxial: confining follower pressure [force/length in 2D, force/area in 3D]
+  unsigned int isotropic_steps; ///< stage 1: pressure on the sides and the top
+  double axial_strain;        ///< stage 2: compressive strain of h_ic
+  /// affine: F row-major at the last step, dim x dim values ({F11, F12, F21, F22} in 2D)
+  std::array<double, 9> affine_F;
+  unsigned int steps;         ///< biaxial/triaxial stage 2 / affine: load steps
   static void declare_parameters(dealii::ParameterHandler& prm);
-  void parse_parameters(dealii::ParameterHandler& prm);
+  /// @param dim the Geometry's dimension (the size of 'Affine F', the name of the test).
+  void parse_parameters(dealii::ParameterHandler& prm, unsigned int dim);
 };
 
 /// subsection Particle dumps: particle pictures of chosen IPs (coupler/particle_dump.h).

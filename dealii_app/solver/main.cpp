@@ -12,6 +12,17 @@
 #include <cstring>
 #include <iostream>
 
+namespace
+{
+template <int dim>
+void run(const fe2dem::macro::Parameters& parameters, bool resume)
+{
+  fe2dem::macro::ExplicitSolver<dim>::install_signal_handlers();
+  fe2dem::macro::ExplicitSolver<dim> solver(parameters, resume);
+  solver.run();
+}
+} // namespace
+
 int main(int argc, char** argv)
 {
   MPI_Init(&argc, &argv);
@@ -39,9 +50,10 @@ int main(int argc, char** argv)
     {
       Parameters parameters;
       parameters.parse(prm, argv[1]);
-      ExplicitSolver<2>::install_signal_handlers();
-      ExplicitSolver<2> solver(parameters, resume);
-      solver.run();
+      if (parameters.geometry.dimension == 3)
+        run<3>(parameters, resume);
+      else
+        run<2>(parameters, resume);
     }
   }
   catch (const dealii::ExceptionBase& e)

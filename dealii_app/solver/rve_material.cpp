@@ -58,4 +58,5 @@ EvaluationCost RveMaterial<dim>::evaluate(std::vector<IpState<dim>>& points)
 }
 
 template class RveMaterial<2>;
+template class RveMaterial<3>;
 } // namespace fe2dem::macro

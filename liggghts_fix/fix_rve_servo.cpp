@@ -4,10 +4,12 @@
 //   fix_rve_servo_input.tpp     keywords, deformation input, checks from init()
 //   fix_rve_servo_solve.tpp     servo state machine and homogenisation
 //   fix_rve_servo_restart.tpp   the state in restart files
-//   fix_rve_servo_membrane.tpp  the 2D frame membrane
+//   fix_rve_servo_membrane.tpp  the frame membrane (2D), dispatch to
+//   fix_rve_servo_membrane_3d.tpp  the 3D frame membrane
 #include "fix_rve_servo.tpp"
 #include "fix_rve_servo_input.tpp"
 #include "fix_rve_servo_membrane.tpp"
+#include "fix_rve_servo_membrane_3d.tpp"
 #include "fix_rve_servo_restart.tpp"
 #include "fix_rve_servo_solve.tpp"
 

@@ -38,14 +38,17 @@
  *     max_overlap FRAC         largest contact overlap / smaller radius, in the
  *                              packing as read and at every contact evaluation of a
  *                              solve (beyond it: error, or status overlapped), default 0.5
- *     membrane yes|no          frame membrane: an inner particle whose centre comes
- *                              closer than its radius to the line between two
- *                              neighbouring frame particles is pushed back with the
- *                              normal contact stiffness, the reaction going to those
- *                              two frame particles (and so into P); keeps particles
- *                              from slipping through gaps that open when the frame
- *                              stretches. Default yes (see README). 2D only: in 3D
- *                              the default is no and 'yes' is refused
+ *     membrane yes|no          frame membrane: keeps inner particles from slipping
+ *                              through gaps that open when the frame stretches. 2D: an
+ *                              inner particle whose centre comes closer than its
+ *                              radius to the line between two neighbouring frame
+ *                              particles is pushed back with the normal contact
+ *                              force, the reaction going to those two frame particles
+ *                              (and so into P). 3D: the same with the Delaunay
+ *                              triangles of each face's frame particles, acting once
+ *                              a centre crosses a triangle's plane
+ *                              (fix_rve_servo_membrane_3d.tpp). Needs kn or Debian's
+ *                              hertz model. Default yes (see README)
  *
  * `fix_modify ID F f11 f12 f21 f22` (3D: nine values) starts a new solve under a new F;
  * `fix_modify ID max_steps N` changes the step budget (not kept in restarts). The
@@ -272,7 +275,7 @@ private:
 
   void remove_affine_velocity();
 
-  // --- frame membrane (fix_rve_servo_membrane.cpp) --------------------------
+  // --- frame membrane (fix_rve_servo_membrane.tpp, _3d.tpp) -----------------
   /// Segments between neighbouring frame particles, grouped by cell side.
   void build_membrane();
   /// Adds membrane forces to inner and frame particles (before frame forces are recorded).
@@ -303,6 +306,23 @@ private:
   /// Refreshes membrane_lines_[side][k] from the current frame positions.
   void update_membrane_line(int side, int k);
   void collect_membrane_candidates();
+  // 3D (fix_rve_servo_membrane_3d.tpp): candidates use side = face 2 a (x_a = 0)
+  // or 2 a + 1 (x_a = L_a) and segment = triangle index
+  struct MembraneTriangle
+  {
+    std::array<int, 3> q{}; ///< frame indices, counter-clockwise in (x_b, x_c), b = a+1, c = a+2
+  };
+  std::array<std::vector<MembraneTriangle>, 6> membrane_faces_;
+  struct MembraneBox ///< a triangle's current extent in reference-cell coordinates
+  {
+    std::array<double, 2> lo{}, hi{}; ///< in-plane (x_b, x_c)
+    double reach = 0.0;               ///< deepest vertex into the cell along the face normal
+  };
+  std::array<std::vector<MembraneBox>, 6> membrane_boxes_; ///< parallel to membrane_faces_
+  std::array<double, 6> membrane_face_reach_{};            ///< deepest reach of each face
+  void build_membrane_3d();
+  void collect_membrane_candidates_3d();
+  void apply_membrane_3d();
   /// Particle i is an inner particle the fix integrates (in its group, not in the frame).
   bool is_inner(int i) const
   {
@@ -333,7 +353,7 @@ private:
   bool affine_inner_ = false; ///< inner_start affine
   double move_rate_ = 1e-3;
   bool error_on_failure_ = true;
-  bool membrane_on_ = dim == 2;
+  bool membrane_on_ = true;
   double max_overlap_ = 0.5;
 
   // frame

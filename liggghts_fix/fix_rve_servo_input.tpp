@@ -124,13 +124,7 @@ void FixRveServo<dim>::parse_arguments(int narg, char** arg)
     {"move_rate", {1, [&](const char* kw, char** v) { move_rate_ = number(kw, v[0], 0.0, true); }}},
     {"on_failure", {1, [&](const char* kw, char** v) { error_on_failure_ = choice(kw, v[0], "error", "flag"); }}},
     {"max_overlap", {1, [&](const char* kw, char** v) { max_overlap_ = number(kw, v[0], 0.0, true); }}},
-    {"membrane", {1, [&](const char* kw, char** v) {
-                    membrane_on_ = choice(kw, v[0], "yes", "no");
-                    if (dim == 3 && membrane_on_)
-                      error->fix_error(FLERR, this, "keyword 'membrane yes' is 2D only; in 3D "
-                                                    "use 'membrane no' (escapes stop the solve with "
-                                                    "status escaped)");
-                  }}},
+    {"membrane", {1, [&](const char* kw, char** v) { membrane_on_ = choice(kw, v[0], "yes", "no"); }}},
   };
 
   for (int iarg = 3; iarg < narg;)
@@ -234,6 +228,13 @@ void FixRveServo<dim>::lookup_contact_law()
   law_.kn = std::max(0.0, value("kn"));
   law_.kt = std::max(0.0, value("kt"));
   law_.friction = value("coefficientFriction");
+  // Debian's hertz model: youngsModulus, poissonsRatio per atom type (one material)
+  auto per_type = [&](const char* name) {
+    Fix* f = modify->find_fix_property(name, "property/global", "peratomtype", nt, 0, style, false);
+    return f ? f->compute_vector(0) : -1.0;
+  };
+  const double E = per_type("youngsModulus"), nu = per_type("poissonsRatio");
+  law_.hertz_modulus = E > 0.0 && nu > -1.0 && nu < 1.0 ? E / (2.0 * (1.0 - nu * nu)) : 0.0;
 }
 
 template <int dim>
@@ -250,6 +251,11 @@ void FixRveServo<dim>::error_checks()
                         ") also integrates these particles; rve/servo integrates them itself";
       error->fix_error(FLERR, this, msg.c_str());
     }
+  if (membrane_on_ && !law_.has_normal_stiffness())
+    error->fix_error(FLERR, this, "keyword 'membrane yes' needs the contact law's normal force: "
+                                  "'kn' (fix property/global, hooke/stiffness) or Debian's hertz "
+                                  "model with youngsModulus and poissonsRatio; use 'membrane no' "
+                                  "for other laws");
   if (!criterion_unbalanced_ && !law_.has_energy())
     error->fix_error(FLERR, this, "keyword 'relax ekin_epot' needs the contact stiffnesses 'kn' and "
                                   "'kt' (fix property/global, hooke/stiffness); use 'relax "

@@ -5,8 +5,8 @@
 // diameter: a frame of touching particles never activates it (an inner disc
 // resting on two touching frame discs of radius R has its centre
 // sqrt(r^2 + 2 R r) > r from their line). Without it, such a particle slips
-// out of the stretched frame and the RVE is lost. 2D only: the bodies are
-// compiled for dim == 2 (the 3D fix refuses 'membrane yes').
+// out of the stretched frame and the RVE is lost. The 2D bodies are
+// compiled for dim == 2; the 3D membrane is in fix_rve_servo_membrane_3d.tpp.
 #pragma once
 
 #include "fix_rve_servo.h"
@@ -57,6 +57,8 @@ void FixRveServo<dim>::build_membrane()
           [](const MembraneSegment& s, const MembraneSegment& t) { return s.lo < t.lo; });
     }
   }
+  else if (membrane_on_ && membrane_faces_[0].empty()) // the frame never changes: once
+    build_membrane_3d();
 }
 
 template <int dim>
@@ -158,8 +160,13 @@ void FixRveServo<dim>::collect_membrane_candidates()
 template <int dim>
 void FixRveServo<dim>::apply_membrane()
 {
-  if (dim != 2 || !membrane_on_ || !law_.has_normal_stiffness())
+  if (!membrane_on_ || !law_.has_normal_stiffness())
     return;
+  if constexpr (dim == 3)
+  {
+    apply_membrane_3d();
+    return;
+  }
   double** x = atom->x;
   double** f = atom->f;
   if (membrane_stale_ || neighbor->lastcall != membrane_built_at_)
@@ -181,7 +188,7 @@ void FixRveServo<dim>::apply_membrane()
     if (t <= 0.0 || t >= 1.0)
       continue; // beyond the ends: the frame particles themselves are the contact
     const int ia = line.ia, ib = line.ib;
-    const double fn = law_.normal_force(r - h);
+    const double fn = law_.membrane_force(r - h, r);
     f[i][0] += fn * n[0];
     f[i][1] += fn * n[1];
     f[ia][0] -= (1.0 - t) * fn * n[0];

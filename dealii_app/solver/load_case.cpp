@@ -1,5 +1,7 @@
 #include "load_case.h"
 
+#include "conditions_load_case.h"
+
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/mapping_q1.h>
 
@@ -134,11 +136,47 @@ typename LoadCase<dim>::Constraints CompressionLoadCase<dim>::constraints(unsign
   return values;
 }
 
-// Follower pressure on the sides (and the top in stage 1): -p n da on the
-// current boundary. 2D: lumped half to each node of a straight Q1 edge
-// (exact). 3D: the consistent nodal forces of a bilinear face,
-// -p int N_a (x_xi x x_eta) dxi deta, by 2x2 Gauss points (exact: the
-// integrand is at most quadratic in each of xi, eta).
+template <int dim>
+void add_follower_pressure(const typename DoFHandler<dim>::face_iterator& face, const Tensor<1, dim>& outward,
+                           double p, const Vector<double>& u, Vector<double>& f)
+{
+  constexpr unsigned int n_vertices = dim == 2 ? 2 : 4;
+  // vertices in deal.II's lexicographic face order (3D: (0,0), (1,0), (0,1), (1,1))
+  Tensor<1, dim> x[n_vertices];
+  for (unsigned int v = 0; v < n_vertices; ++v)
+    for (unsigned int c = 0; c < dim; ++c)
+      x[v][c] = face->vertex(v)[c] + u[face->vertex_dof_index(v, c)];
+  if constexpr (dim == 2)
+  {
+    const Tensor<1, dim> d = x[1] - x[0];
+    Tensor<1, dim> n;
+    n[0] = d[1];
+    n[1] = -d[0];
+    if (n * outward < 0.0)
+      n *= -1.0;
+    for (unsigned int v = 0; v < 2; ++v)
+      for (unsigned int c = 0; c < dim; ++c)
+        f[face->vertex_dof_index(v, c)] -= 0.5 * p * n[c];
+  }
+  else
+  {
+    const double sign = cross_product_3d(x[1] - x[0] + x[3] - x[2], x[2] - x[0] + x[3] - x[1]) * outward > 0.0 ? 1.0 : -1.0;
+    const double g[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
+    for (const double xi : g)
+      for (const double eta : g)
+      {
+        const Tensor<1, dim> x_xi = (1.0 - eta) * (x[1] - x[0]) + eta * (x[3] - x[2]);
+        const Tensor<1, dim> x_eta = (1.0 - xi) * (x[2] - x[0]) + xi * (x[3] - x[1]);
+        const Tensor<1, dim> n_da = 0.25 * sign * cross_product_3d(x_xi, x_eta); // Gauss weight 1/4
+        const double N[4] = {(1.0 - xi) * (1.0 - eta), xi * (1.0 - eta), (1.0 - xi) * eta, xi * eta};
+        for (unsigned int v = 0; v < 4; ++v)
+          for (unsigned int c = 0; c < dim; ++c)
+            f[face->vertex_dof_index(v, c)] -= p * N[v] * n_da[c];
+      }
+  }
+}
+
+// Follower pressure on the sides (and the top in stage 1).
 template <int dim>
 void CompressionLoadCase<dim>::external_force(unsigned int stage, double fraction,
                                               const DoFHandler<dim>& dof_handler, const Vector<double>& u,
@@ -158,52 +196,9 @@ void CompressionLoadCase<dim>::external_force(unsigned int stage, double fractio
       const bool is_side = id == left || id == right || (dim == 3 && (id == back || id == front));
       if (!is_side && !(stage == 1 && id == top))
         continue;
-      if constexpr (dim == 2)
-      {
-        const bool is_left = id == left, is_right = id == right, is_top = id == top;
-        Point<dim> x[2];
-        for (unsigned int v = 0; v < 2; ++v)
-          for (unsigned int c = 0; c < dim; ++c)
-            x[v][c] = face->vertex(v)[c] + u[face->vertex_dof_index(v, c)];
-        const Tensor<1, dim> d = x[1] - x[0];
-        Tensor<1, dim> n;
-        n[0] = d[1];
-        n[1] = -d[0];
-        if ((is_left && n[0] > 0.0) || (is_right && n[0] < 0.0) || (is_top && n[1] < 0.0))
-          n *= -1.0; // outward
-        for (unsigned int v = 0; v < 2; ++v)
-          for (unsigned int c = 0; c < dim; ++c)
-            f[face->vertex_dof_index(v, c)] -= 0.5 * p * n[c];
-      }
-      else
-        add_face_pressure(face, static_cast<BoxFace>(id), p, u, f);
-    }
-}
-
-template <int dim>
-template <typename FaceIterator>
-void CompressionLoadCase<dim>::add_face_pressure(const FaceIterator& face, BoxFace id, double p,
-                                                 const Vector<double>& u, Vector<double>& f) const
-{
-  // vertices in deal.II's lexicographic face order: (0,0), (1,0), (0,1), (1,1)
-  Tensor<1, dim> x[4];
-  for (unsigned int v = 0; v < 4; ++v)
-    for (unsigned int c = 0; c < dim; ++c)
-      x[v][c] = face->vertex(v)[c] + u[face->vertex_dof_index(v, c)];
-  Tensor<1, dim> outward; // of the bounding-box face
-  outward[id / 2] = id % 2 == 0 ? -1.0 : 1.0;
-  const double sign = cross_product_3d(x[1] - x[0] + x[3] - x[2], x[2] - x[0] + x[3] - x[1]) * outward > 0.0 ? 1.0 : -1.0;
-  const double g[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
-  for (const double xi : g)
-    for (const double eta : g)
-    {
-      const Tensor<1, dim> x_xi = (1.0 - eta) * (x[1] - x[0]) + eta * (x[3] - x[2]);
-      const Tensor<1, dim> x_eta = (1.0 - xi) * (x[2] - x[0]) + xi * (x[3] - x[1]);
-      const Tensor<1, dim> n_da = 0.25 * sign * cross_product_3d(x_xi, x_eta); // Gauss weight 1/4
-      const double N[4] = {(1.0 - xi) * (1.0 - eta), xi * (1.0 - eta), (1.0 - xi) * eta, xi * eta};
-      for (unsigned int v = 0; v < 4; ++v)
-        for (unsigned int c = 0; c < dim; ++c)
-          f[face->vertex_dof_index(v, c)] -= p * N[v] * n_da[c];
+      Tensor<1, dim> outward; // of the bounding-box face
+      outward[id / 2] = id % 2 == 0 ? -1.0 : 1.0;
+      add_follower_pressure<dim>(face, outward, p, u, f);
     }
 }
 
@@ -258,6 +253,8 @@ double AffineLoadCase<dim>::affine_deviation(double fraction, const Vector<doubl
 template <int dim>
 std::unique_ptr<LoadCase<dim>> make_load_case(const DofMap<dim>& dofs, double h0, const Parameters& prm)
 {
+  if (prm.loading.boundary == Loading::Boundary::conditions)
+    return std::make_unique<ConditionsLoadCase<dim>>(dofs, h0, prm.loading, prm.conditions);
   if (prm.loading.boundary != Loading::Boundary::affine)
     return std::make_unique<CompressionLoadCase<dim>>(dofs, h0, prm.loading, prm.geometry.mesh_file);
   return std::make_unique<AffineLoadCase<dim>>(dofs, h0, prm.loading);
@@ -273,4 +270,8 @@ template class AffineLoadCase<2>;
 template class AffineLoadCase<3>;
 template std::unique_ptr<LoadCase<2>> make_load_case(const DofMap<2>&, double, const Parameters&);
 template std::unique_ptr<LoadCase<3>> make_load_case(const DofMap<3>&, double, const Parameters&);
+template void add_follower_pressure<2>(const DoFHandler<2>::face_iterator&, const Tensor<1, 2>&, double,
+                                       const Vector<double>&, Vector<double>&);
+template void add_follower_pressure<3>(const DoFHandler<3>::face_iterator&, const Tensor<1, 3>&, double,
+                                       const Vector<double>&, Vector<double>&);
 } // namespace fe2dem::macro

@@ -41,6 +41,19 @@ enum BoxFace : unsigned int
 /// Boundary id of boundary faces that lie on no face of the bounding box.
 constexpr unsigned int other_boundary_id(int dim) { return 2 * dim; }
 
+/**
+ * Adds to @p f the nodal forces of a follower pressure @p p (> 0 pushes in)
+ * on a boundary @p face in its current position (reference + @p u):
+ * -p n da. 2D: a straight edge, half to each node (exact). 3D: a bilinear
+ * face, -p int N_a (x_xi x x_eta) dxi deta by 2x2 Gauss points (exact: the
+ * integrand is at most quadratic in each of xi, eta). n is taken on the side
+ * of @p outward (any vector pointing out of the body).
+ */
+template <int dim>
+void add_follower_pressure(const typename dealii::DoFHandler<dim>::face_iterator& face,
+                           const dealii::Tensor<1, dim>& outward, double p, const dealii::Vector<double>& u,
+                           dealii::Vector<double>& f);
+
 /// Every dof's node and where it lies, fixed for a run.
 template <int dim>
 struct DofMap
@@ -117,10 +130,6 @@ public:
                       const dealii::Vector<double>& u, dealii::Vector<double>& f) const override;
 
 private:
-  /// 3D: adds the nodal forces of pressure @p p on the current @p face (of box face @p id) to @p f.
-  template <typename FaceIterator>
-  void add_face_pressure(const FaceIterator& face, BoxFace id, double p, const dealii::Vector<double>& u,
-                         dealii::Vector<double>& f) const;
   const Loading& loading_;
 };
 

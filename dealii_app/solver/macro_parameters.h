@@ -63,10 +63,12 @@ struct Loading
 {
   enum class Boundary
   {
-    biaxial,  ///< 2D compression test (load_case.h: CompressionLoadCase)
-    triaxial, ///< 3D compression test (the same load case in 3D)
-    affine
+    biaxial,   ///< 2D compression test (load_case.h: CompressionLoadCase)
+    triaxial,  ///< 3D compression test (the same load case in 3D)
+    affine,
+    conditions ///< subsections Boundary condition N (conditions_load_case.h)
   } boundary;                 ///< the load case (load_case.h)
+  double end_time;            ///< conditions: t of the functions at the last load step
   double pressure;            ///< biaxial/triaxial: confining follower pressure [force/length in 2D, force/area in 3D]
   unsigned int isotropic_steps; ///< stage 1: pressure on the sides and the top
   double axial_strain;        ///< stage 2: compressive strain of h_ic
@@ -76,6 +78,31 @@ struct Loading
   static void declare_parameters(dealii::ParameterHandler& prm);
   /// @param dim the Geometry's dimension (the size of 'Affine F', the name of the test).
   void parse_parameters(dealii::ParameterHandler& prm, unsigned int dim);
+};
+
+/**
+ * subsection Boundary condition N (N = 1 .. max_count): one condition of
+ * 'Boundary = conditions' on one boundary, with functions of the reference
+ * position (x, y, z) and the pseudo-time t (deal.II FunctionParser).
+ */
+struct BoundaryCondition
+{
+  static constexpr unsigned int max_count = 8;
+  enum class Type
+  {
+    fixed,        ///< listed components zero
+    displacement, ///< listed components u_c = f_c(X, t)
+    velocity,     ///< listed components u_c = integral of f_c(X, s) ds from 0 to t
+    traction,     ///< dead load: nominal traction T(X, t) (dim functions) on the reference face
+    pressure      ///< follower pressure p(t) normal to the current face (one function)
+  } type;
+  std::string boundary_text;          ///< as written (messages)
+  unsigned int boundary_id;           ///< fe2dem's id (load_case.h BoxFace, 2 dim: other)
+  std::vector<unsigned int> components; ///< fixed/displacement/velocity: constrained components
+  std::string function;               ///< ';'-separated expressions
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  /// All used subsections, in order. @param dim of the Geometry. @throws std::runtime_error naming the subsection.
+  static std::vector<BoundaryCondition> parse_all(dealii::ParameterHandler& prm, unsigned int dim);
 };
 
 /// subsection Particle dumps: particle pictures of chosen IPs (coupler/particle_dump.h).
@@ -122,6 +149,7 @@ struct Parameters
   MaterialParameters material;
   DynamicRelaxation relaxation;
   Loading loading;
+  std::vector<BoundaryCondition> conditions; ///< 'Boundary = conditions' only
   ParticleDumps particle_dumps;
   Checkpointing checkpoint;
   Parallel parallel;

@@ -105,7 +105,7 @@ void RvePathRunner<dim>::write_row(const Result& r, unsigned int stress_iteratio
        << ',' << r.packing_fraction << ',' << MPI_Wtime() - t_start_ << ','
        << r.contacts.mechanical_coordination << ',' << r.contacts.n_contacts << ','
        << r.contacts.n_sliding << ',' << r.contacts.max_overlap << ',' << F_check_error << ','
-       << stress_iterations << ',' << r.membrane_steps << ','
+       << stress_iterations << ',' << membrane_steps_in_step_ << ','
        << fe2dem::fabric_deviator(r.contacts.fabric) << '\n';
   csv_.flush();
   const char* axial_name = dim == 2 ? "22" : "33";
@@ -117,6 +117,16 @@ void RvePathRunner<dim>::write_row(const Result& r, unsigned int stress_iteratio
             << std::endl;
   ++step_;
   dem_steps_in_step_ = 0;
+  membrane_steps_in_step_ = 0;
+}
+
+template <int dim>
+const typename RvePathRunner<dim>::Result& RvePathRunner<dim>::solve(const Matrix& F)
+{
+  const Result& r = rve_.solve(F);
+  dem_steps_in_step_ += r.dem_steps;
+  membrane_steps_in_step_ += r.membrane_steps;
+  return r;
 }
 
 template <int dim>
@@ -132,8 +142,7 @@ unsigned int RvePathRunner<dim>::control_stress(double& x, double target, double
     double dx = (target - f0) / slope;
     dx = std::clamp(dx, -0.01, 0.01); // at most 1 % strain per trial
     const double x1 = x + dx;
-    const Result& r = rve_.solve(make_F(x1));
-    dem_steps_in_step_ += r.dem_steps;
+    const Result& r = solve(make_F(x1));
     const double f1 = stress(r);
     if (x1 != x && (f1 - f0) / (x1 - x) > 0.0)
       slope = (f1 - f0) / (x1 - x);
@@ -171,7 +180,7 @@ unsigned int RvePathRunner<dim>::control_components(Matrix& F, const std::vector
     s_prev = rve_.result().sigma;
     for (std::size_t k = 0; k < comps.size(); ++k)
       F[comps[k]] += std::clamp((targets[k] - s_prev[comps[k]]) / slopes_[comps[k]], -0.01, 0.01);
-    dem_steps_in_step_ += rve_.solve(F).dem_steps;
+    solve(F);
     bool done = true;
     for (std::size_t k = 0; k < comps.size(); ++k)
       done = done && std::abs(rve_.result().sigma[comps[k]] - targets[k]) <= tol;
@@ -265,7 +274,7 @@ void RvePathRunner<dim>::run_biaxial_stage()
         its = control_components(F_, {0, 4}, {-prm_.path.pressure, -prm_.path.pressure},
                                  "the lateral stresses sigma11, sigma22", true);
       else
-        dem_steps_in_step_ += rve_.solve(F_).dem_steps;
+        solve(F_);
       write_row(rve_.result(), its);
       continue;
     }
@@ -284,7 +293,7 @@ void RvePathRunner<dim>::run_biaxial_stage()
         [F_axial](double f) { return Matrix{{f, 0.0, 0.0, F_axial}}; },
         [](const Result& r) { return r.sigma[0]; }, "the lateral stress sigma11");
     else
-      dem_steps_in_step_ += rve_.solve(Matrix{{F11, 0.0, 0.0, F_axial}}).dem_steps;
+      solve(Matrix{{F11, 0.0, 0.0, F_axial}});
     F_ = {{F11, 0.0, 0.0, F_axial}};
     write_row(rve_.result(), its);
   }
@@ -297,7 +306,7 @@ void RvePathRunner<dim>::run_shear_stage()
   {
     Matrix F = F_;
     F[1] = prm_.path.shear_strain * k / prm_.path.loading_steps; // F12 = gamma
-    dem_steps_in_step_ += rve_.solve(F).dem_steps;
+    solve(F);
     write_row(rve_.result(), 0);
   }
 }
@@ -324,7 +333,7 @@ void RvePathRunner<dim>::run_table()
       throw std::runtime_error(prm_.path.table_file + ":" + std::to_string(line_no) + ": '" + line +
                                (dim == 2 ? "' is not four numbers F11 F12 F21 F22 with det F > 0"
                                          : "' is not nine numbers F11 F12 F13 F21 ... F33 with det F > 0"));
-    dem_steps_in_step_ += rve_.solve(F).dem_steps;
+    solve(F);
     write_row(rve_.result(), 0);
   }
 }
@@ -335,6 +344,7 @@ void RvePathRunner<dim>::run()
   t_start_ = MPI_Wtime();
   open_output();
   dem_steps_in_step_ = rve_.result().dem_steps;
+  membrane_steps_in_step_ = rve_.result().membrane_steps;
   write_row(rve_.result(), 0); // the relaxed packing at F = I
   const std::string& type = prm_.path.type;
   if (type == "table")

@@ -60,11 +60,15 @@ private:
                                   const std::vector<double>& targets, const std::string& what,
                                   bool F_moved_elsewhere = false);
 
+  /// One RVE solve; its DEM and membrane steps count towards the step's row.
+  const Result& solve(const Matrix& F);
+
   const Parameters& prm_;
   ServoRve<dim> rve_;
   std::ofstream csv_;
   unsigned int step_ = 0;
-  long dem_steps_in_step_ = 0;
+  long dem_steps_in_step_ = 0;      ///< over every solve of the current step (rve.csv)
+  long membrane_steps_in_step_ = 0; ///< likewise
   double t_start_ = 0.0;
   Matrix F_ = identity<dim>();
   double slope_iso_ = 0.0, slope_lateral_ = 0.0;

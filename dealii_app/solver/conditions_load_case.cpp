@@ -29,10 +29,7 @@ ConditionsLoadCase<dim>::ConditionsLoadCase(const DofMap<dim>& dofs, double h0, 
     Parsed p{c, nullptr};
     if (c.type != BoundaryCondition::Type::fixed)
     {
-      const unsigned int n_functions = c.type == BoundaryCondition::Type::traction ? dim
-                                       : c.type == BoundaryCondition::Type::pressure ? 1
-                                                                                    : c.components.size();
-      p.function = std::make_unique<FunctionParser<dim>>(n_functions);
+      p.function = std::make_unique<FunctionParser<dim>>(c.n_functions(dim));
       p.function->initialize(dim == 2 ? "x,y,t" : "x,y,z,t", c.function, {}, true);
     }
     conditions_.push_back(std::move(p));

@@ -310,10 +310,7 @@ std::vector<BoundaryCondition> BoundaryCondition::parse_all(dealii::ParameterHan
     if (!constrains && !c.components.empty())
       throw std::runtime_error(where + ": 'Type' = " + type + " acts on every component; leave "
                                "'Components' empty");
-    const unsigned int n_functions = c.type == Type::fixed      ? 0
-                                     : c.type == Type::traction ? dim
-                                     : c.type == Type::pressure ? 1
-                                                                : c.components.size();
+    const unsigned int n_functions = c.n_functions(dim);
     if (n_functions > 0)
     {
       const std::size_t given = dealii::Utilities::split_string_list(c.function, ';').size();

@@ -100,6 +100,11 @@ struct BoundaryCondition
   unsigned int boundary_id;           ///< fe2dem's id (load_case.h BoxFace, 2 dim: other)
   std::vector<unsigned int> components; ///< fixed/displacement/velocity: constrained components
   std::string function;               ///< ';'-separated expressions
+  /// Expressions 'Function' must hold: 0 (fixed), dim (traction), 1 (pressure), else one per component.
+  unsigned int n_functions(unsigned int dim) const
+  {
+    return type == Type::fixed ? 0 : type == Type::traction ? dim : type == Type::pressure ? 1 : components.size();
+  }
   static void declare_parameters(dealii::ParameterHandler& prm);
   /// All used subsections, in order. @param dim of the Geometry. @throws std::runtime_error naming the subsection.
   static std::vector<BoundaryCondition> parse_all(dealii::ParameterHandler& prm, unsigned int dim);

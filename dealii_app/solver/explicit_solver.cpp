@@ -31,7 +31,7 @@ using namespace dealii;
 
 template <int dim>
 ExplicitSolver<dim>::ExplicitSolver(const Parameters& parameters, bool resume)
-  : prm_(parameters), fe_(FE_Q<dim>(1), dim), quadrature_(2),
+  : prm_(parameters), fe_(FE_Q<dim>(1), dim), quadrature_(parameters.elements.one_point ? 1 : 2),
     fe_values_F_(fe_, quadrature_, update_gradients),
     fe_values_f_int_(fe_, quadrature_, update_gradients | update_JxW_values),
     pcout_(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0),
@@ -103,6 +103,16 @@ void ExplicitSolver<dim>::make_material(const std::string& checkpoint)
     states = [&](std::size_t k) { return read_rve_state(checkpoint, k); };
   material_ = std::make_unique<RveMaterial<dim>>(factory, ip_, m.stability_modulus, m.density,
                                                  m.skip_tolerance, states, static_cast<int>(step_));
+}
+
+// One point per element: the mean-strain element data and the hourglass
+// forces, scaled by the material's wave speed (one_point_elements.h).
+template <int dim>
+void ExplicitSolver<dim>::make_one_point_elements()
+{
+  if (prm_.elements.one_point)
+    one_point_ = std::make_unique<OnePointElements<dim>>(dof_handler_, prm_.elements, prm_.material.density,
+                                                         material_->wave_speed());
 }
 
 // summary.csv and history.h5: new, or as far as the checkpoint got.
@@ -210,7 +220,7 @@ void ExplicitSolver<dim>::setup_system()
   dof_handler_.distribute_dofs(fe_);
   const unsigned int n = dof_handler_.n_dofs();
   dof_map_.reinit(dof_handler_);
-  for (auto* v : {&mass_, &displacement_, &velocity_, &f_int_, &f_ext_})
+  for (auto* v : {&mass_, &displacement_, &velocity_, &f_int_, &f_ext_, &f_hourglass_})
     v->reinit(n);
   ip_.resize(triangulation_.n_active_cells() * quadrature_.size());
   FEValues<dim> fe_values(fe_, quadrature_, update_quadrature_points);
@@ -224,11 +234,13 @@ void ExplicitSolver<dim>::setup_system()
   load_case_ = make_load_case<dim>(dof_map_, hi_[1] - lo_[1], prm_);
 }
 
-// (M5): row-sum-free diagonal scaling of the consistent mass.
+// (M5): row-sum-free diagonal scaling of the consistent mass, integrated
+// by 2x2(x2) Gauss points also for one-point elements.
 template <int dim>
 void ExplicitSolver<dim>::assemble_lumped_mass()
 {
-  FEValues<dim> fe_values(fe_, quadrature_, update_values | update_JxW_values);
+  const QGauss<dim> quadrature(2);
+  FEValues<dim> fe_values(fe_, quadrature, update_values | update_JxW_values);
   std::vector<types::global_dof_index> dofs(fe_.dofs_per_cell);
   for (const auto& cell : dof_handler_.active_cell_iterators())
   {
@@ -236,7 +248,7 @@ void ExplicitSolver<dim>::assemble_lumped_mass()
     cell->get_dof_indices(dofs);
     std::vector<double> nn(fe_.dofs_per_cell, 0.0);
     double volume = 0.0;
-    for (unsigned int q = 0; q < quadrature_.size(); ++q)
+    for (unsigned int q = 0; q < quadrature.size(); ++q)
     {
       volume += fe_values.JxW(q);
       for (unsigned int i = 0; i < fe_.dofs_per_cell; ++i)
@@ -260,11 +272,21 @@ void ExplicitSolver<dim>::update_stresses()
 {
   const FEValuesExtractors::Vector u(0);
   std::vector<Tensor<2, dim>> grad_u(quadrature_.size());
+  Vector<double> u_cell(fe_.dofs_per_cell);
   unsigned int point = 0;
   for (const auto& cell : dof_handler_.active_cell_iterators())
   {
-    fe_values_F_.reinit(cell);
-    fe_values_F_[u].get_function_gradients(displacement_, grad_u);
+    if (one_point_)
+    {
+      cell->get_dof_values(displacement_, u_cell);
+      grad_u[0] = one_point_->deformation_gradient(cell->active_cell_index(), u_cell) -
+                  unit_symmetric_tensor<dim>();
+    }
+    else
+    {
+      fe_values_F_.reinit(cell);
+      fe_values_F_[u].get_function_gradients(displacement_, grad_u);
+    }
     for (unsigned int q = 0; q < quadrature_.size(); ++q, ++point)
     {
       ip_[point].F = unit_symmetric_tensor<dim>() + grad_u[q];
@@ -287,6 +309,11 @@ void ExplicitSolver<dim>::assemble_internal_force()
   const FEValuesExtractors::Vector u(0);
   std::vector<types::global_dof_index> dofs(fe_.dofs_per_cell);
   f_int_ = 0.0;
+  if (one_point_)
+  {
+    assemble_one_point_force();
+    return;
+  }
   unsigned int point = 0;
   for (const auto& cell : dof_handler_.active_cell_iterators())
   {
@@ -296,6 +323,29 @@ void ExplicitSolver<dim>::assemble_internal_force()
       for (unsigned int i = 0; i < fe_.dofs_per_cell; ++i)
         f_int_[dofs[i]] +=
           scalar_product(ip_[point].P, fe_values_f_int_[u].gradient(i, q)) * fe_values_f_int_.JxW(q);
+  }
+}
+
+// f_int of one-point elements: the stress part and the hourglass forces (kept apart for the energies).
+template <int dim>
+void ExplicitSolver<dim>::assemble_one_point_force()
+{
+  std::vector<types::global_dof_index> dofs(fe_.dofs_per_cell);
+  Vector<double> u_cell(fe_.dofs_per_cell), v_cell(fe_.dofs_per_cell), f_stress(fe_.dofs_per_cell),
+    f_hourglass(fe_.dofs_per_cell);
+  f_hourglass_ = 0.0;
+  for (const auto& cell : dof_handler_.active_cell_iterators())
+  {
+    const unsigned int c = cell->active_cell_index();
+    cell->get_dof_indices(dofs);
+    cell->get_dof_values(displacement_, u_cell);
+    cell->get_dof_values(velocity_, v_cell);
+    one_point_->internal_force(c, ip_[c].P, u_cell, v_cell, f_stress, f_hourglass);
+    for (unsigned int i = 0; i < fe_.dofs_per_cell; ++i)
+    {
+      f_int_[dofs[i]] += f_stress[i] + f_hourglass[i];
+      f_hourglass_[dofs[i]] += f_hourglass[i];
+    }
   }
 }
 

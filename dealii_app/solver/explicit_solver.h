@@ -1,7 +1,8 @@
 /**
  * @file explicit_solver.h
  * The macro solver of `fe2dem`: total Lagrangian, Q1 elements with 2x2
- * (3D: 2x2x2) Gauss points, lumped mass (M5) and dynamic relaxation
+ * (3D: 2x2x2) Gauss points or one point and hourglass control
+ * (one_point_elements.h), lumped mass (M5) and dynamic relaxation
  * (M3)-(M9) per load step, in the style of the deal.II tutorials (step-18,
  * step-44). Instantiated for dim = 2 (plane strain) and 3.
  *
@@ -20,6 +21,7 @@
 #include "load_case.h"
 #include "macro_parameters.h"
 #include "material.h"
+#include "one_point_elements.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
@@ -75,6 +77,8 @@ private:
   void apply_boundary_values();
   void update_stresses();
   void assemble_internal_force();
+  void assemble_one_point_force();
+  void make_one_point_elements();
   /// One load step, cut into halves and retried after RVE failures (subsection Faults).
   unsigned int solve_load_step();
   unsigned int relax_load_step();
@@ -138,10 +142,12 @@ private:
   DofMap<dim> dof_map_;
   std::unique_ptr<LoadCase<dim>> load_case_;
   std::unique_ptr<Material<dim>> material_;
+  std::unique_ptr<OnePointElements<dim>> one_point_; ///< 'Quadrature' = one point only
   std::unique_ptr<DynamicRelaxationIntegrator> integrator_;
   std::unique_ptr<HistoryWriter> history_file_;
   std::map<dealii::types::global_dof_index, double> boundary_values_;
   dealii::Vector<double> mass_, displacement_, velocity_, f_int_, f_ext_;
+  dealii::Vector<double> f_hourglass_; ///< the hourglass part of f_int_ (one point)
   std::vector<IpState<dim>> ip_; ///< cell by cell, quadrature_.size() per cell
   double h_min_ = 0.0;
   dealii::Point<dim> lo_, hi_; ///< bounding box of the reference mesh

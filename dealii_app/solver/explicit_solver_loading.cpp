@@ -25,6 +25,7 @@ void ExplicitSolver<dim>::run()
   stage_ = load_case_->steps_in_stage(1) > 0 ? 1 : 2;
   const std::string checkpoint = resume_ ? resume_from_checkpoint() : "";
   make_material(checkpoint);
+  make_one_point_elements();
   // (M8) is capped by the stability limit 2/omega_max of the mesh, omega_max ~ 2 c sqrt(dim)/h.
   integrator_ = std::make_unique<DynamicRelaxationIntegrator>(
     prm_.relaxation, mass_, 2.0 * std::sqrt(double(dim)) * material_->wave_speed() / h_min_);

@@ -469,6 +469,7 @@ void Parameters::declare_parameters(dealii::ParameterHandler& prm)
                     "Directory for summary.csv and solution-*.vtu (relative to the parameter file).");
   Geometry::declare_parameters(prm);
   MaterialParameters::declare_parameters(prm);
+  FiniteElements::declare_parameters(prm);
   DynamicRelaxation::declare_parameters(prm);
   Loading::declare_parameters(prm);
   BoundaryCondition::declare_parameters(prm);
@@ -487,6 +488,7 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
   output_directory = std::filesystem::path(out).is_absolute() ? out : (base / out).lexically_normal().string();
   geometry.parse_parameters(prm, base.string());
   material.parse_parameters(prm);
+  elements.parse_parameters(prm);
   relaxation.parse_parameters(prm);
   loading.parse_parameters(prm, geometry.dimension);
   conditions = BoundaryCondition::parse_all(prm, geometry.dimension);

@@ -49,6 +49,24 @@ struct MaterialParameters
   void parse_parameters(dealii::ParameterHandler& prm);
 };
 
+/**
+ * subsection Finite elements: the quadrature of the Q1 elements
+ * (one_point_elements.h). One point per element means one RVE per element.
+ */
+struct FiniteElements
+{
+  bool one_point; ///< one point per element (uniform gradient) instead of 2x2 (2x2x2) Gauss
+  enum class Hourglass
+  {
+    none,      ///< no control: the zero-energy modes stay (testing)
+    stiffness, ///< Flanagan-Belytschko stiffness form (quasi-static and dynamic)
+    viscous    ///< Flanagan-Belytschko viscous form (dynamic)
+  } hourglass;
+  double hourglass_coefficient; ///< epsilon of one_point_elements.h, in (0, 1]
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm);
+};
+
 /// subsection Dynamic relaxation: physics.md (M3)-(M9).
 struct DynamicRelaxation
 {
@@ -152,6 +170,7 @@ struct Parameters
   std::string output_directory;
   Geometry geometry;
   MaterialParameters material;
+  FiniteElements elements;
   DynamicRelaxation relaxation;
   Loading loading;
   std::vector<BoundaryCondition> conditions; ///< 'Boundary = conditions' only

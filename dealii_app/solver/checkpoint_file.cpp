@@ -17,8 +17,9 @@ namespace fe2dem::macro
 namespace
 {
 // 1: IP state F, P, fabric, F_last_step, J_ic, coordination, anisotropy,
-//    DEM steps, servo iterations; 2: IpState::pack() (every RVE statistic).
-constexpr int format_version = 2;
+//    DEM steps, servo iterations; 2: IpState::pack() (every RVE statistic);
+// 3: energy.csv rows and the energy balance.
+constexpr int format_version = 3;
 
 void check(herr_t status, const std::string& what, const std::string& file)
 {
@@ -128,6 +129,8 @@ void write_checkpoint(const std::string& file, const CheckpointData& d,
     const hsize_t n_ip = d.ip_state_width ? d.ip_state.size() / d.ip_state_width : 0;
     write_bytes(h, "ip_state", H5T_NATIVE_DOUBLE, d.ip_state.data(), {n_ip, d.ip_state_width}, tmp);
     write_string(h, "summary_rows", d.summary_rows, tmp);
+    write_string(h, "energy_rows", d.energy_rows, tmp);
+    write_bytes(h, "energy_state", H5T_NATIVE_DOUBLE, d.energy_state.data(), {d.energy_state.size()}, tmp);
     write_string(h, "parameters", d.parameters, tmp);
     hid_t g = H5Gcreate2(h, "rve", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     H5Gclose(g);
@@ -161,9 +164,9 @@ CheckpointData read_checkpoint(const std::string& file)
       throw std::runtime_error(
         "checkpoint '" + file + "' has format " + std::to_string(format) + ", this fe2dem reads format " +
         std::to_string(format_version) +
-        (format < format_version ? " (it was written by an earlier fe2dem, before the IP state held "
-                                   "every RVE statistic): finish that run with the fe2dem that "
-                                   "started it, or start it again without --resume"
+        (format < format_version ? " (it was written by an earlier fe2dem, before checkpoints "
+                                   "held the energy balance): finish that run with the fe2dem "
+                                   "that started it, or start it again without --resume"
                                  : " (it was written by a newer fe2dem): resume with that one"));
     d.step = read_attribute<int>(h, "step", H5T_NATIVE_INT, file);
     d.stage = read_attribute<int>(h, "stage", H5T_NATIVE_INT, file);
@@ -181,6 +184,8 @@ CheckpointData read_checkpoint(const std::string& file)
     d.ip_state_width = dims[1];
     d.ip_state = read_vector<double>(h, "ip_state", H5T_NATIVE_DOUBLE, file);
     d.summary_rows = read_string(h, "summary_rows", file);
+    d.energy_rows = read_string(h, "energy_rows", file);
+    d.energy_state = read_vector<double>(h, "energy_state", H5T_NATIVE_DOUBLE, file);
     d.parameters = read_string(h, "parameters", file);
   }
   catch (...)

@@ -7,7 +7,8 @@
  *
  * Layout: attributes format, step, stage, step_in_stage, u_top_ic, h_ic,
  * wall_seconds; datasets /displacement [n_dofs], /ip_state [n_ip][n],
- * /summary_rows and /parameters (strings), /rve/NNNNNN (committed state of
+ * /summary_rows, /energy_rows and /parameters (strings), /energy_state
+ * (EnergyBalance::pack()), /rve/NNNNNN (committed state of
  * RVE k as bytes, a LIGGGHTS restart image) and /history/ (a copy of
  * history.h5 up to this step).
  */
@@ -31,6 +32,8 @@ struct CheckpointData
   std::size_t ip_state_width = 0;
   std::vector<double> ip_state;               ///< per IP, ip_state_width values
   std::string summary_rows;                   ///< summary.csv rows so far (no header)
+  std::string energy_rows;                    ///< energy.csv rows so far (no header)
+  std::vector<double> energy_state;           ///< EnergyBalance::pack()
   std::string parameters;                     ///< the run's parameters (see checked_parameters)
 };
 

@@ -131,6 +131,12 @@ void ExplicitSolver<dim>::open_output_files(const std::string& checkpoint)
               "rve_rank_max_s,rve_rank_mean_s"
            << (dim == 3 ? ",sigma33_mean\n" : "\n")
            << summary_rows_ << std::flush;
+  const std::string energy = prm_.output_directory + "/energy.csv";
+  energy_csv_.open(energy);
+  if (!energy_csv_)
+    throw std::runtime_error("cannot write '" + energy + "': check 'Output directory'");
+  energy_csv_ << "step,time,kinetic_energy,internal_work,external_work,hourglass_work,balance\n"
+              << energy_rows_ << std::flush;
   const std::string history = prm_.output_directory + "/history.h5";
   if (checkpoint.empty())
   {
@@ -305,6 +311,12 @@ template <int dim>
 void ExplicitSolver<dim>::assemble_internal_force()
 {
   update_stresses();
+  assemble_forces_from_stresses();
+}
+
+template <int dim>
+void ExplicitSolver<dim>::assemble_forces_from_stresses()
+{
   TimerOutput::Scope t(timer_, "assemble f_int");
   const FEValuesExtractors::Vector u(0);
   std::vector<types::global_dof_index> dofs(fe_.dofs_per_cell);

@@ -16,6 +16,7 @@
 #pragma once
 
 #include "dynamic_relaxation.h"
+#include "energy_balance.h"
 #include "history_writer.h"
 #include "ip_state.h"
 #include "load_case.h"
@@ -76,7 +77,10 @@ private:
   void make_material(const std::string& checkpoint);
   void apply_boundary_values();
   void update_stresses();
+  /// update_stresses(), then assemble_forces_from_stresses().
   void assemble_internal_force();
+  /// f_int (and f_hourglass) from the current P of the IPs, u and v.
+  void assemble_forces_from_stresses();
   void assemble_one_point_force();
   void make_one_point_elements();
   /// One load step, cut into halves and retried after RVE failures (subsection Faults).
@@ -106,6 +110,14 @@ private:
   void write_summary_row(const StepStatistics& stats, unsigned int iterations, double axial,
                          const dealii::Utilities::MPI::MinMaxAvg& rve_seconds);
   void write_vtu(const StepStatistics& stats);
+  /// External forces with the reactions of the constrained dofs (energy_balance.h).
+  dealii::Vector<double> external_with_reactions() const;
+  /// Adds the converged load step to the energy balance and writes its energy.csv row.
+  void record_energy();
+  /// Upper bound of the mesh's highest frequency (stable step 2/omega).
+  double highest_frequency() const;
+  /// t of the load case at the end of the current (sub)step (energy.csv).
+  double load_time() const;
   void open_output_files(const std::string& checkpoint);
 
   // --- checkpoints (explicit_solver_checkpoint.cpp) -------------------------
@@ -157,6 +169,9 @@ private:
   std::ofstream summary_;
   std::vector<std::pair<double, std::string>> pvd_records_;
   std::string summary_rows_; ///< rows of summary.csv so far (checkpointed)
+  EnergyBalance energy_;
+  std::ofstream energy_csv_;
+  std::string energy_rows_; ///< rows of energy.csv so far (checkpointed)
   double t_start_ = 0.0;
   bool resume_ = false;
   bool fault_injected_ = false;

@@ -113,6 +113,8 @@ std::string ExplicitSolver<dim>::write_checkpoint()
       for (std::size_t p = 0; p < converged_.ip.size(); ++p)
         converged_.ip[p].pack(&d.ip_state[p * d.ip_state_width]);
       d.summary_rows = summary_rows_;
+      d.energy_rows = energy_rows_;
+      d.energy_state = energy_.pack();
       d.parameters = prm_.identity;
       macro::write_checkpoint(file, d, states, history_file_.get());
       prune_checkpoints(checkpoint_directory_, prm_.checkpoint.keep);
@@ -163,6 +165,8 @@ std::string ExplicitSolver<dim>::resume_from_checkpoint()
   for (std::size_t p = 0; p < ip_.size(); ++p)
     ip_[p].unpack(&d.ip_state[p * d.ip_state_width]);
   summary_rows_ = d.summary_rows;
+  energy_rows_ = d.energy_rows;
+  energy_.unpack(d.energy_state);
   t_start_ = MPI_Wtime() - d.wall_seconds;
   for (unsigned int s = 1; s <= step_; ++s)
     pvd_records_.emplace_back(s, vtu_name(s));

@@ -4,6 +4,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace fe2dem::macro
@@ -34,7 +35,45 @@ std::vector<std::vector<unsigned int>> hourglass_factors()
   }
   return modes;
 }
+/// The volume and uniform gradient b_a of @p cell; @p values: FE_Q(1), 2-point Gauss.
+template <int dim>
+double uniform_gradient(const typename Triangulation<dim>::cell_iterator& cell, FEValues<dim>& values,
+                        std::array<Tensor<1, dim>, (1u << dim)>& b)
+{
+  // grad N is a polynomial of degree <= 3 in each reference coordinate
+  // times 1/det J, so 2-point Gauss is exact for J grad N.
+  values.reinit(cell);
+  double volume = 0.0;
+  b.fill(Tensor<1, dim>());
+  for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
+  {
+    volume += values.JxW(q);
+    for (unsigned int a = 0; a < b.size(); ++a)
+      b[a] += values.shape_grad(a, q) * values.JxW(q);
+  }
+  for (Tensor<1, dim>& b_a : b)
+    b_a /= volume;
+  return volume;
+}
 } // namespace
+
+template <int dim>
+double OnePointElements<dim>::frequency_bound(const Triangulation<dim>& mesh, const double wave_speed)
+{
+  const FE_Q<dim> q1(1);
+  FEValues<dim> values(q1, QGauss<dim>(2), update_gradients | update_JxW_values);
+  std::array<Tensor<1, dim>, n_vertices> b;
+  double highest = 0.0;
+  for (const auto& cell : mesh.active_cell_iterators())
+  {
+    uniform_gradient<dim>(cell, values, b);
+    double b_squared = 0.0;
+    for (const Tensor<1, dim>& b_a : b)
+      b_squared += b_a * b_a;
+    highest = std::max(highest, wave_speed * std::sqrt(n_vertices * b_squared));
+  }
+  return highest;
+}
 
 template <int dim>
 OnePointElements<dim>::OnePointElements(const DoFHandler<dim>& dofs, const FiniteElements& prm,
@@ -45,30 +84,18 @@ OnePointElements<dim>::OnePointElements(const DoFHandler<dim>& dofs, const Finit
   for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
     local_dof_.emplace_back(fe.system_to_component_index(i).second, fe.system_to_component_index(i).first);
 
-  // The average gradient: grad N is a polynomial of degree <= 3 in each
-  // reference coordinate times 1/det J, so 2-point Gauss is exact for J grad N.
   const FE_Q<dim> q1(1);
-  const QGauss<dim> quadrature(2);
-  FEValues<dim> values(q1, quadrature, update_gradients | update_JxW_values);
+  FEValues<dim> values(q1, QGauss<dim>(2), update_gradients | update_JxW_values);
   const auto modes = hourglass_factors<dim>();
   const double eps = prm.hourglass_coefficient, modulus = density * wave_speed * wave_speed;
   cells_.resize(dofs.get_triangulation().n_active_cells());
   for (const auto& cell : dofs.get_triangulation().active_cell_iterators())
   {
     Cell& c = cells_[cell->active_cell_index()];
-    values.reinit(cell);
-    for (unsigned int q = 0; q < quadrature.size(); ++q)
-    {
-      c.volume += values.JxW(q);
-      for (unsigned int a = 0; a < n_vertices; ++a)
-        c.b[a] += values.shape_grad(a, q) * values.JxW(q);
-    }
+    c.volume = uniform_gradient<dim>(cell, values, c.b);
     double b_squared = 0.0;
     for (unsigned int a = 0; a < n_vertices; ++a)
-    {
-      c.b[a] /= c.volume;
       b_squared += c.b[a] * c.b[a];
-    }
     for (unsigned int alpha = 0; alpha < n_modes; ++alpha)
     {
       std::array<double, n_vertices> h;

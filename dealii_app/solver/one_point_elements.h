@@ -8,9 +8,10 @@
  * **Mean strain.** An element's deformation gradient is its volume average
  *   F = I + sum_a u_a (x) b_a,   b_a = (1/V) int_e grad_X N_a dV,
  * (the "uniform gradient", integrated exactly by 2x2(x2) Gauss points; in
- * 2D it equals grad N_a at the centre, in 3D only the average passes the
- * patch test on distorted hexahedra), and a stress P gives the nodal forces
- * f_a = V P b_a.
+ * 2D it equals grad N_a at the centre, in 3D not on distorted hexahedra),
+ * and a stress P gives the nodal forces f_a = V P b_a. With the average,
+ * the forces of a uniform stress cancel at every interior node exactly
+ * (sum_e V_e b_a = integral of N_a n over the patch boundary = 0).
  *
  * **Hourglass modes.** h_alpha are the products of two or more of a
  * vertex's reference coordinates xi_d = +-1 (2D: xi eta; 3D: xi eta,
@@ -37,6 +38,7 @@
 
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
 
 #include <array>
@@ -69,6 +71,15 @@ public:
                       dealii::Vector<double>& f_hourglass) const;
   /// Reference volume (2D: area) of cell @p cell.
   double volume(unsigned int cell) const { return cells_[cell].volume; }
+
+  /**
+   * max over the cells of c sqrt(2^dim sum_a |b_a|^2): on a box of sides
+   * L_d, 2 c sqrt(sum_d 1/L_d^2), an upper bound of the highest frequency of
+   * a lumped-mass Q1 element, fully integrated or one point with eps <= 1
+   * (the bound of the stable explicit step 2/omega).
+   * @param wave_speed c [length/time]
+   */
+  static double frequency_bound(const dealii::Triangulation<dim>& mesh, double wave_speed);
 
 private:
   struct Cell

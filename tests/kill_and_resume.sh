@@ -40,3 +40,7 @@ mpirun_np "$np_resumed" "$exe" case.prm --resume > resumed.log 2>&1 || { echo "F
 grep -m1 "resuming from" resumed.log
 python3 "$tests/compare_summaries.py" "$reference/summary.csv" out/summary.csv || exit 1
 /usr/bin/python3 "$tests/compare_histories.py" "$reference/history.h5" out/history.h5 || exit 1
+if [[ -f "$reference/energy.csv" ]]; then
+  cmp "$reference/energy.csv" out/energy.csv || { echo "FAIL: energy.csv differs from the uninterrupted run"; exit 1; }
+  echo "energy.csv: bitwise equal"
+fi

@@ -18,7 +18,7 @@ namespace
 {
 // 1: IP state F, P, fabric, F_last_step, J_ic, coordination, anisotropy,
 //    DEM steps, servo iterations; 2: IpState::pack() (every RVE statistic);
-// 3: energy.csv rows and the energy balance.
+// 3: energy.csv rows, the energy balance and the state of explicit dynamics.
 constexpr int format_version = 3;
 
 void check(herr_t status, const std::string& what, const std::string& file)
@@ -131,6 +131,7 @@ void write_checkpoint(const std::string& file, const CheckpointData& d,
     write_string(h, "summary_rows", d.summary_rows, tmp);
     write_string(h, "energy_rows", d.energy_rows, tmp);
     write_bytes(h, "energy_state", H5T_NATIVE_DOUBLE, d.energy_state.data(), {d.energy_state.size()}, tmp);
+    write_bytes(h, "dynamics_state", H5T_NATIVE_DOUBLE, d.dynamics_state.data(), {d.dynamics_state.size()}, tmp);
     write_string(h, "parameters", d.parameters, tmp);
     hid_t g = H5Gcreate2(h, "rve", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     H5Gclose(g);
@@ -186,6 +187,7 @@ CheckpointData read_checkpoint(const std::string& file)
     d.summary_rows = read_string(h, "summary_rows", file);
     d.energy_rows = read_string(h, "energy_rows", file);
     d.energy_state = read_vector<double>(h, "energy_state", H5T_NATIVE_DOUBLE, file);
+    d.dynamics_state = read_vector<double>(h, "dynamics_state", H5T_NATIVE_DOUBLE, file);
     d.parameters = read_string(h, "parameters", file);
   }
   catch (...)

@@ -8,7 +8,8 @@
  * Layout: attributes format, step, stage, step_in_stage, u_top_ic, h_ic,
  * wall_seconds; datasets /displacement [n_dofs], /ip_state [n_ip][n],
  * /summary_rows, /energy_rows and /parameters (strings), /energy_state
- * (EnergyBalance::pack()), /rve/NNNNNN (committed state of
+ * (EnergyBalance::pack()), /dynamics_state (t, v, a, f_int; empty when
+ * quasi-static), /rve/NNNNNN (committed state of
  * RVE k as bytes, a LIGGGHTS restart image) and /history/ (a copy of
  * history.h5 up to this step).
  */
@@ -34,6 +35,7 @@ struct CheckpointData
   std::string summary_rows;                   ///< summary.csv rows so far (no header)
   std::string energy_rows;                    ///< energy.csv rows so far (no header)
   std::vector<double> energy_state;           ///< EnergyBalance::pack()
+  std::vector<double> dynamics_state;         ///< explicit dynamics: t, then v, a, f_int (dof order); else empty
   std::string parameters;                     ///< the run's parameters (see checked_parameters)
 };
 

@@ -30,7 +30,7 @@ ConditionsLoadCase<dim>::ConditionsLoadCase(const DofMap<dim>& dofs, double h0, 
     if (c.type != BoundaryCondition::Type::fixed)
     {
       p.function = std::make_unique<FunctionParser<dim>>(c.n_functions(dim));
-      p.function->initialize(dim == 2 ? "x,y,t" : "x,y,z,t", c.function, {}, true);
+      p.function->initialize(dim == 2 ? "x,y,t" : "x,y,z,t", c.function, {{"pi", dealii::numbers::PI}}, true);
     }
     conditions_.push_back(std::move(p));
   }

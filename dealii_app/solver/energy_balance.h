@@ -6,7 +6,12 @@
  * rule over the recorded states, and the kinetic energy. Without damping
  * kinetic + internal - external stays constant; in quasi-static runs
  * (states = converged load steps, kinetic = 0) internal = external up to
- * the residual. Written to energy.csv, one row per load step.
+ * the residual. Written to energy.csv, one row per load step, with the
+ * material's stored energy sum W(F) dV (strain_energy, NaN for RVEs), an
+ * independent measure: kinetic + strain energy (+ hourglass work of the
+ * stiffness form) is the total energy of an undamped free vibration.
+ * In explicit dynamics the kinetic energy is central differences' own,
+ * v^{n-1/2} M v^{n+1/2} / 2 (central_difference.h).
  *
  * The external forces include the reactions of prescribed degrees of
  * freedom (f_int + M a there), so that prescribed motion does work.

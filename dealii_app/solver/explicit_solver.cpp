@@ -135,7 +135,7 @@ void ExplicitSolver<dim>::open_output_files(const std::string& checkpoint)
   energy_csv_.open(energy);
   if (!energy_csv_)
     throw std::runtime_error("cannot write '" + energy + "': check 'Output directory'");
-  energy_csv_ << "step,time,kinetic_energy,internal_work,external_work,hourglass_work,balance\n"
+  energy_csv_ << "step,time,kinetic_energy,internal_work,external_work,hourglass_work,balance,strain_energy\n"
               << energy_rows_ << std::flush;
   const std::string history = prm_.output_directory + "/history.h5";
   if (checkpoint.empty())
@@ -226,7 +226,8 @@ void ExplicitSolver<dim>::setup_system()
   dof_handler_.distribute_dofs(fe_);
   const unsigned int n = dof_handler_.n_dofs();
   dof_map_.reinit(dof_handler_);
-  for (auto* v : {&mass_, &displacement_, &velocity_, &f_int_, &f_ext_, &f_hourglass_})
+  for (auto* v : {&mass_, &displacement_, &velocity_, &f_int_, &f_ext_, &f_hourglass_, &acceleration_,
+                  &f_int_previous_})
     v->reinit(n);
   ip_.resize(triangulation_.n_active_cells() * quadrature_.size());
   FEValues<dim> fe_values(fe_, quadrature_, update_quadrature_points);
@@ -247,6 +248,7 @@ void ExplicitSolver<dim>::assemble_lumped_mass()
 {
   const QGauss<dim> quadrature(2);
   FEValues<dim> fe_values(fe_, quadrature, update_values | update_JxW_values);
+  const double density = prm_.material.density * (prm_.dynamics.dynamic ? prm_.dynamics.mass_scaling : 1.0);
   std::vector<types::global_dof_index> dofs(fe_.dofs_per_cell);
   for (const auto& cell : dof_handler_.active_cell_iterators())
   {
@@ -267,7 +269,7 @@ void ExplicitSolver<dim>::assemble_lumped_mass()
       for (unsigned int j = 0; j < fe_.dofs_per_cell; ++j)
         if (fe_.system_to_component_index(j).first == c)
           sum += nn[j];
-      mass_[dofs[i]] += nn[i] / sum * prm_.material.density * volume;
+      mass_[dofs[i]] += nn[i] / sum * density * volume;
     }
   }
 }

@@ -15,6 +15,7 @@
  */
 #pragma once
 
+#include "central_difference.h"
 #include "dynamic_relaxation.h"
 #include "energy_balance.h"
 #include "history_writer.h"
@@ -64,6 +65,10 @@ private:
     typename LoadCase<dim>::Reference reference;
     dealii::Vector<double> displacement;
     std::vector<IpState<dim>> ip;
+    // explicit dynamics: the rest of the state of the integrator
+    dealii::Vector<double> velocity, acceleration, f_int;
+    double time = 0.0;
+    std::vector<double> energy; ///< EnergyBalance::pack()
   };
 
   void make_grid();
@@ -85,6 +90,17 @@ private:
   void make_one_point_elements();
   /// One load step, cut into halves and retried after RVE failures (subsection Faults).
   unsigned int solve_load_step();
+
+  // --- explicit dynamics (explicit_solver_dynamics.cpp) ---------------------
+  void make_central_difference();
+  /// The state at t = 0: prescribed u and v, rest elsewhere, a from the forces.
+  void start_dynamics();
+  /// One output interval in time steps; returns their number.
+  unsigned int integrate_load_step();
+  /// Velocity and acceleration of the prescribed dofs at time @p t (differences over @p dt).
+  std::pair<CentralDifferenceIntegrator::Values, CentralDifferenceIntegrator::Values>
+  prescribed_motion(double t, double dt) const;
+
   unsigned int relax_load_step();
   void inject_fault_if_due(bool first_attempt);
   void finish_isotropic_stage();
@@ -112,8 +128,11 @@ private:
   void write_vtu(const StepStatistics& stats);
   /// External forces with the reactions of the constrained dofs (energy_balance.h).
   dealii::Vector<double> external_with_reactions() const;
-  /// Adds the converged load step to the energy balance and writes its energy.csv row.
+  /// Quasi-static: adds the converged load step to the energy balance.
   void record_energy();
+  void write_energy_row();
+  /// The material's stored energy over the mesh, sum of W(F) dV (NaN for RVEs).
+  double strain_energy() const;
   /// Upper bound of the mesh's highest frequency (stable step 2/omega).
   double highest_frequency() const;
   /// t of the load case at the end of the current (sub)step (energy.csv).
@@ -155,7 +174,10 @@ private:
   std::unique_ptr<LoadCase<dim>> load_case_;
   std::unique_ptr<Material<dim>> material_;
   std::unique_ptr<OnePointElements<dim>> one_point_; ///< 'Quadrature' = one point only
-  std::unique_ptr<DynamicRelaxationIntegrator> integrator_;
+  std::unique_ptr<DynamicRelaxationIntegrator> integrator_;     ///< quasi-static
+  std::unique_ptr<CentralDifferenceIntegrator> central_difference_; ///< dynamic
+  dealii::Vector<double> acceleration_, f_int_previous_;           ///< dynamic
+  double time_ = 0.0; ///< dynamic: the physical time of the state
   std::unique_ptr<HistoryWriter> history_file_;
   std::map<dealii::types::global_dof_index, double> boundary_values_;
   dealii::Vector<double> mass_, displacement_, velocity_, f_int_, f_ext_;

@@ -86,7 +86,8 @@ int ExplicitSolver<dim>::stop_signal_received() const
 template <int dim>
 void ExplicitSolver<dim>::save_converged_state()
 {
-  converged_ = {stage_, step_in_stage_, step_, load_case_->reference(), displacement_, ip_};
+  converged_ = {stage_,        step_in_stage_, step_, load_case_->reference(), displacement_, ip_,
+                velocity_,     acceleration_,  f_int_, time_,                    energy_.pack()};
 }
 
 template <int dim>
@@ -114,7 +115,13 @@ std::string ExplicitSolver<dim>::write_checkpoint()
         converged_.ip[p].pack(&d.ip_state[p * d.ip_state_width]);
       d.summary_rows = summary_rows_;
       d.energy_rows = energy_rows_;
-      d.energy_state = energy_.pack();
+      d.energy_state = converged_.energy;
+      if (prm_.dynamics.dynamic)
+      {
+        d.dynamics_state = {converged_.time};
+        for (const Vector<double>* v : {&converged_.velocity, &converged_.acceleration, &converged_.f_int})
+          d.dynamics_state.insert(d.dynamics_state.end(), v->begin(), v->end());
+      }
       d.parameters = prm_.identity;
       macro::write_checkpoint(file, d, states, history_file_.get());
       prune_checkpoints(checkpoint_directory_, prm_.checkpoint.keep);
@@ -167,6 +174,16 @@ std::string ExplicitSolver<dim>::resume_from_checkpoint()
   summary_rows_ = d.summary_rows;
   energy_rows_ = d.energy_rows;
   energy_.unpack(d.energy_state);
+  if (prm_.dynamics.dynamic)
+  {
+    const std::size_t n = displacement_.size();
+    if (d.dynamics_state.size() != 1 + 3 * n)
+      throw std::runtime_error("--resume: checkpoint '" + file + "' holds no state of explicit dynamics");
+    time_ = d.dynamics_state[0];
+    for (std::size_t i = 0; i < n; ++i)
+      velocity_[i] = d.dynamics_state[1 + i], acceleration_[i] = d.dynamics_state[1 + n + i],
+      f_int_[i] = d.dynamics_state[1 + 2 * n + i];
+  }
   t_start_ = MPI_Wtime() - d.wall_seconds;
   for (unsigned int s = 1; s <= step_; ++s)
     pvd_records_.emplace_back(s, vtu_name(s));

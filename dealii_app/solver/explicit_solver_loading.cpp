@@ -4,6 +4,7 @@
 #include "rve_pool.h" // CouplerError
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/fe/fe_values.h>
 
 #include <mpi.h>
 
@@ -28,11 +29,19 @@ void ExplicitSolver<dim>::run()
   const std::string checkpoint = resume_ ? resume_from_checkpoint() : "";
   make_material(checkpoint);
   make_one_point_elements();
-  integrator_ = std::make_unique<DynamicRelaxationIntegrator>(prm_.relaxation, mass_, highest_frequency());
+  if (prm_.dynamics.dynamic)
+    make_central_difference();
+  else
+    integrator_ = std::make_unique<DynamicRelaxationIntegrator>(prm_.relaxation, mass_, highest_frequency());
   if (checkpoint.empty())
   {
-    assemble_forces_from_stresses(); // the initial stress (RVEs: the packing's) does work from the start
-    boundary_values_ = load_case_->constraints(stage_, 0.0);
+    if (prm_.dynamics.dynamic)
+      start_dynamics();
+    else
+    {
+      assemble_forces_from_stresses(); // the initial stress (RVEs: the packing's) does work from the start
+      boundary_values_ = load_case_->constraints(stage_, 0.0);
+    }
     energy_.start(displacement_, f_int_, external_with_reactions(), f_hourglass_);
   }
   open_output_files(checkpoint);
@@ -49,7 +58,9 @@ void ExplicitSolver<dim>::run()
         {
           TimerOutput::Scope t(timer_, "output");
           output_step(iterations);
-          record_energy();
+          if (!prm_.dynamics.dynamic)
+            record_energy();
+          write_energy_row();
         }
         close_load_step();
         save_converged_state();
@@ -97,7 +108,7 @@ unsigned int ExplicitSolver<dim>::solve_load_step()
     {
       inject_fault_if_due(first_attempt);
       first_attempt = false;
-      iterations += relax_load_step();
+      iterations += prm_.dynamics.dynamic ? integrate_load_step() : relax_load_step();
       done += size;
     }
     catch (const CouplerError& e)
@@ -122,6 +133,12 @@ unsigned int ExplicitSolver<dim>::solve_load_step()
              << std::lround(1.0 / size) << " sub-steps" << std::endl;
       material_->rollback();
       displacement_ = start;
+      if (prm_.dynamics.dynamic)
+      {
+        velocity_ = converged_.velocity, acceleration_ = converged_.acceleration, f_int_ = converged_.f_int;
+        time_ = converged_.time;
+        energy_.unpack(converged_.energy);
+      }
     }
   }
   material_->commit();
@@ -184,18 +201,20 @@ double ExplicitSolver<dim>::highest_frequency() const
 template <int dim>
 double ExplicitSolver<dim>::load_time() const
 {
+  if (prm_.dynamics.dynamic)
+    return time_;
   if (prm_.loading.boundary == Loading::Boundary::conditions)
     return load_fraction_ * prm_.loading.end_time;
   return (stage_ == 1 ? 0.0 : load_case_->steps_in_stage(1) > 0 ? 1.0 : 0.0) + load_fraction_;
 }
 
-// Quasi-static: the reactions of the constrained dofs balance f_int there.
+// The reaction of a constrained dof: f_int + M a there (quasi-static: a = 0).
 template <int dim>
 Vector<double> ExplicitSolver<dim>::external_with_reactions() const
 {
   Vector<double> g = f_ext_;
   for (const auto& entry : boundary_values_)
-    g[entry.first] = f_int_[entry.first];
+    g[entry.first] = f_int_[entry.first] + mass_[entry.first] * acceleration_[entry.first];
   return g;
 }
 
@@ -204,14 +223,35 @@ void ExplicitSolver<dim>::record_energy()
 {
   load_case_->external_force(stage_, load_fraction_, dof_handler_, displacement_, f_ext_);
   energy_.record(displacement_, f_int_, external_with_reactions(), f_hourglass_, 0.0);
+}
+
+template <int dim>
+void ExplicitSolver<dim>::write_energy_row()
+{
   if (rank_ != 0)
     return;
   std::ostringstream row;
   row << std::setprecision(12) << step_ << ',' << load_time() << ',' << energy_.kinetic << ','
       << energy_.internal << ',' << energy_.external << ',' << energy_.hourglass << ',' << energy_.balance()
-      << '\n';
+      << ',' << strain_energy() << '\n';
   energy_rows_ += row.str();
   energy_csv_ << row.str() << std::flush;
+}
+
+template <int dim>
+double ExplicitSolver<dim>::strain_energy() const
+{
+  double energy = 0.0;
+  FEValues<dim> fe_values(fe_, quadrature_, update_JxW_values);
+  unsigned int point = 0;
+  for (const auto& cell : dof_handler_.active_cell_iterators())
+  {
+    fe_values.reinit(cell);
+    for (unsigned int q = 0; q < quadrature_.size(); ++q, ++point)
+      energy += material_->strain_energy_density(ip_[point].F) *
+                (one_point_ ? one_point_->volume(cell->active_cell_index()) : fe_values.JxW(q));
+  }
+  return energy;
 }
 
 template <int dim>

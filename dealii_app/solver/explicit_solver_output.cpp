@@ -137,7 +137,7 @@ void ExplicitSolver<dim>::write_summary_row(const StepStatistics& st, unsigned i
   summary_ << row.str() << std::flush;
   pcout_ << "stage " << stage_ << " step " << std::setw(3) << step_ << "  axial strain "
          << std::setw(9) << axial << "  stress ratio " << std::setw(9) << st.ratio_mean
-         << "  DR iterations " << std::setw(6) << iterations << "  DEM steps " << cost_in_step_.dem_steps
+         << (prm_.dynamics.dynamic ? "  time steps " : "  DR iterations ") << std::setw(6) << iterations << "  DEM steps " << cost_in_step_.dem_steps
          << (prm_.material.steps_per_iteration > 0
                ? "  unconverged RVE returns " + std::to_string(cost_in_step_.unconverged)
                : std::string())

@@ -252,7 +252,9 @@ void BoundaryCondition::declare_parameters(dealii::ParameterHandler& prm)
                       "'x, y' (one function each, in this order).");
     prm.declare_entry("Function", "0", Anything(),
                       "Expressions separated by ';' in the reference position x, y (z) and the "
-                      "pseudo-time t (deal.II FunctionParser syntax, e.g. '-0.02*20*t').");
+                      "time t (pseudo-time when quasi-static, physical time in explicit dynamics), "
+                      "deal.II FunctionParser syntax with the constant pi, e.g. '-0.02*20*t' or "
+                      "'t < 0.1 ? 1e-3*sin(pi*t/0.2) : 1e-3'.");
     prm.leave_subsection();
   }
 }
@@ -322,7 +324,7 @@ std::vector<BoundaryCondition> BoundaryCondition::parse_all(dealii::ParameterHan
       {
         // syntax only (3 variables cover 2D too); muparser parses at the first evaluation
         dealii::FunctionParser<3> check(n_functions);
-        check.initialize("x,y,z,t", c.function, {}, true);
+        check.initialize("x,y,z,t", c.function, {{"pi", dealii::numbers::PI}}, true);
         for (unsigned int k = 0; k < n_functions; ++k)
           check.value(dealii::Point<3>(), k);
       }
@@ -471,6 +473,7 @@ void Parameters::declare_parameters(dealii::ParameterHandler& prm)
   MaterialParameters::declare_parameters(prm);
   FiniteElements::declare_parameters(prm);
   DynamicRelaxation::declare_parameters(prm);
+  Dynamics::declare_parameters(prm);
   Loading::declare_parameters(prm);
   BoundaryCondition::declare_parameters(prm);
   ParticleDumps::declare_parameters(prm);
@@ -490,6 +493,7 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
   material.parse_parameters(prm);
   elements.parse_parameters(prm);
   relaxation.parse_parameters(prm);
+  dynamics.parse_parameters(prm);
   loading.parse_parameters(prm, geometry.dimension);
   conditions = BoundaryCondition::parse_all(prm, geometry.dimension);
   if (loading.boundary == Loading::Boundary::conditions && conditions.empty())
@@ -499,6 +503,15 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
     throw std::runtime_error("subsection Boundary condition N: set, but subsection Loading has "
                              "'Boundary' = " + prm.get({"Loading"}, "Boundary") +
                              "; use 'Boundary' = conditions or remove them");
+  if (dynamics.dynamic && loading.boundary != Loading::Boundary::conditions)
+    throw std::runtime_error("subsection Dynamics: 'Analysis' = dynamic needs 'Boundary' = conditions in "
+                             "subsection Loading (the biaxial, triaxial and affine presets are "
+                             "quasi-static); set the boundary conditions as subsections 'Boundary "
+                             "condition N' with functions of the time t");
+  if (dynamics.dynamic && material.type == MaterialParameters::Type::rve)
+    throw std::runtime_error("subsection Dynamics: 'Analysis' = dynamic works with the neo-Hookean "
+                             "material only so far; RVEs at the quadrature points advance in "
+                             "dynamic relaxation ('Analysis' = quasi-static)");
   particle_dumps.parse_parameters(prm);
   checkpoint.parse_parameters(prm);
   parallel.parse_parameters(prm);

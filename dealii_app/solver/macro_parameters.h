@@ -76,6 +76,22 @@ struct DynamicRelaxation
   void parse_parameters(dealii::ParameterHandler& prm);
 };
 
+/**
+ * subsection Dynamics: quasi-static loading by dynamic relaxation, or
+ * explicit dynamics (central differences, central_difference.h).
+ */
+struct Dynamics
+{
+  bool dynamic;          ///< explicit dynamics instead of dynamic relaxation
+  double time_step;      ///< fixed step [time]; 0: safety_factor x the critical step
+  double safety_factor;  ///< of the critical step, in (0, 1]
+  double rayleigh_alpha; ///< mass-proportional damping C = alpha M + beta K [1/time]
+  double rayleigh_beta;  ///< stiffness-proportional damping [time]
+  double mass_scaling;   ///< density factor >= 1 of the mass matrix (waves slower by its square root)
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm);
+};
+
 /// subsection Loading: boundary conditions and load steps.
 struct Loading
 {
@@ -172,6 +188,7 @@ struct Parameters
   MaterialParameters material;
   FiniteElements elements;
   DynamicRelaxation relaxation;
+  Dynamics dynamics;
   Loading loading;
   std::vector<BoundaryCondition> conditions; ///< 'Boundary = conditions' only
   ParticleDumps particle_dumps;

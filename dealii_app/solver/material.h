@@ -10,6 +10,9 @@
 
 #include "ip_state.h"
 
+#include <deal.II/base/tensor.h>
+
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -41,6 +44,11 @@ public:
   virtual EvaluationCost evaluate(std::vector<IpState<dim>>& points) = 0;
   /// Upper estimate of the P-wave speed, for the stable time step.
   virtual double wave_speed() const = 0;
+  /// Stored energy per reference volume W(F) of a hyperelastic law; NaN if it has none (RVEs).
+  virtual double strain_energy_density(const dealii::Tensor<2, dim>& /*F*/) const
+  {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
 
   /// Whether set_step_limit() bounds evaluations (multiple time stepping).
   virtual bool has_step_limit() const { return false; }

@@ -34,6 +34,12 @@ public:
       p.P = piola(p.F);
     return {};
   }
+  /// W = mu/2 (tr C - 3) - mu ln J + lambda/2 (ln J)^2 (plane strain: F33 = 1, so tr C - 2 in 2D).
+  double strain_energy_density(const dealii::Tensor<2, dim>& F) const override
+  {
+    const double ln_J = std::log(determinant(F));
+    return 0.5 * mu_ * (scalar_product(F, F) - dim) - mu_ * ln_J + 0.5 * lambda_ * ln_J * ln_J;
+  }
   /// P-wave speed at the reference state.
   double wave_speed() const override { return std::sqrt((lambda_ + 2.0 * mu_) / density_); }
 

@@ -22,6 +22,11 @@ void FiniteElements::declare_parameters(dealii::ParameterHandler& prm)
   prm.declare_entry("Hourglass coefficient", "0.05", Double(),
                     "one point: epsilon in (0, 1] of the hourglass forces (one_point_elements.h); "
                     "0.03-0.15 is usual, larger values stiffen bending.");
+  prm.declare_entry("Formulation", "total Lagrangian", Selection("total Lagrangian|corotational"),
+                    "total Lagrangian: the material sees F. corotational (physics.md 1.4): it sees "
+                    "only the strain increments in its corotational frame, from the midpoint "
+                    "configuration of each load step, and its stress is rotated back (RVEs never "
+                    "rotate; corotational_material.h).");
   prm.leave_subsection();
 }
 
@@ -34,6 +39,7 @@ void FiniteElements::parse_parameters(dealii::ParameterHandler& prm)
               : control == "viscous" ? Hourglass::viscous
                                      : Hourglass::none;
   hourglass_coefficient = prm.get_double("Hourglass coefficient");
+  corotational = prm.get("Formulation") == "corotational";
   prm.leave_subsection();
   if (one_point && hourglass != Hourglass::none &&
       !(hourglass_coefficient > 0.0 && hourglass_coefficient <= 1.0))

@@ -1,6 +1,7 @@
 #include "explicit_solver.h"
 
 #include "checkpoint_file.h"
+#include "corotational_material.h"
 #include "neo_hookean.h"
 #include "rve_material.h"
 #include "servo_rve_factory.h"
@@ -82,6 +83,14 @@ void ExplicitSolver<dim>::prepare_output_directory()
 
 template <int dim>
 void ExplicitSolver<dim>::make_material(const std::string& checkpoint)
+{
+  make_constitutive_material(checkpoint);
+  if (prm_.elements.corotational)
+    material_ = std::make_unique<CorotationalMaterial<dim>>(std::move(material_));
+}
+
+template <int dim>
+void ExplicitSolver<dim>::make_constitutive_material(const std::string& checkpoint)
 {
   const auto& m = prm_.material;
   if (m.type == MaterialParameters::Type::neo_hookean)

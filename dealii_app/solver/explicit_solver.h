@@ -80,6 +80,8 @@ private:
   void prepare_output_directory();
   /// @param checkpoint restore the RVEs from this checkpoint (empty: build and relax them).
   void make_material(const std::string& checkpoint);
+  /// The neo-Hookean law or the RVEs, before the corotational wrapper.
+  void make_constitutive_material(const std::string& checkpoint);
   void apply_boundary_values();
   void update_stresses();
   /// update_stresses(), then assemble_forces_from_stresses().
@@ -133,8 +135,10 @@ private:
   void write_energy_row();
   /// The material's stored energy over the mesh, sum of W(F) dV (NaN for RVEs).
   double strain_energy() const;
-  /// Upper bound of the mesh's highest frequency (stable step 2/omega).
+  /// Upper bound of the mesh's highest frequency (critical step 2/omega of explicit dynamics).
   double highest_frequency() const;
+  /// omega_max of dynamic relaxation's step (M8).
+  double relaxation_frequency() const;
   /// t of the load case at the end of the current (sub)step (energy.csv).
   double load_time() const;
   void open_output_files(const std::string& checkpoint);

@@ -89,6 +89,9 @@ unsigned int ExplicitSolver<dim>::integrate_load_step()
     central_difference_->correct(velocity_, acceleration_, f_int_, f_int_previous_, f_ext_, dt, v, a);
     energy_.record(displacement_, f_int_, external_with_reactions(), f_hourglass_,
                    central_difference_->kinetic_energy(velocity_, acceleration_, dt));
+    if (prm_.elements.corotational) // corotational increments per time step
+      for (IpState<dim>& p : ip_)
+        p.commit_corotational();
     time_ = t;
   }
   return n;

@@ -24,13 +24,25 @@ struct IpState
   dealii::Tensor<2, dim> P;                                            ///< first Piola-Kirchhoff
   dealii::Tensor<2, dim> F_last_step = dealii::unit_symmetric_tensor<dim>(); ///< at the last converged step
   double J_ic = 1.0;                                                   ///< det F after the isotropic stage
+  /// Corotational formulation (corotational_material.h): the deformation the material sees, F^R,
+  /// and the macro F, at the last commit (a converged load step; in dynamics every time step) ...
+  dealii::Tensor<2, dim> F_corotational = dealii::unit_symmetric_tensor<dim>();
+  dealii::Tensor<2, dim> F_corotational_base = dealii::unit_symmetric_tensor<dim>();
+  /// ... and F^R at the last evaluation.
+  dealii::Tensor<2, dim> F_corotational_trial = dealii::unit_symmetric_tensor<dim>();
+  /// The trial corotational state becomes the committed one.
+  void commit_corotational()
+  {
+    F_corotational = F_corotational_trial;
+    F_corotational_base = F;
+  }
   RveStatistics<dim> statistics;                                       ///< of the last RVE solve
 
   /// Doubles of pack(): what a checkpoint keeps of a converged state (position is rebuilt).
-  static constexpr std::size_t packed_size() { return 3 * dim * dim + 1 + RveStatistics<dim>::packed_size(); }
+  static constexpr std::size_t packed_size() { return 5 * dim * dim + 1 + RveStatistics<dim>::packed_size(); }
   double* pack(double* out) const
   {
-    for (const dealii::Tensor<2, dim>* t : {&F, &P, &F_last_step})
+    for (const dealii::Tensor<2, dim>* t : {&F, &P, &F_last_step, &F_corotational, &F_corotational_base})
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           *out++ = (*t)[i][j];
@@ -39,7 +51,7 @@ struct IpState
   }
   const double* unpack(const double* in)
   {
-    for (dealii::Tensor<2, dim>* t : {&F, &P, &F_last_step})
+    for (dealii::Tensor<2, dim>* t : {&F, &P, &F_last_step, &F_corotational, &F_corotational_base})
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           (*t)[i][j] = *in++;

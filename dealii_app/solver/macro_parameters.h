@@ -63,6 +63,7 @@ struct FiniteElements
     viscous    ///< Flanagan-Belytschko viscous form (dynamic)
   } hourglass;
   double hourglass_coefficient; ///< epsilon of one_point_elements.h, in (0, 1]
+  bool corotational;            ///< corotational update (corotational_material.h) instead of total Lagrangian
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm);
 };

@@ -38,6 +38,9 @@ void PathParameters::declare_parameters(dealii::ParameterHandler& prm)
                     "F11 F12 F13 F21 ... F33, row by row), one load step each; '#' starts a comment.");
   prm.declare_entry("Stress tolerance", "1e-2", Double(0.0),
                     "Relative tolerance of stress-controlled components.");
+  prm.declare_entry("Axial direction", "z", dealii::Patterns::Selection("z|y"),
+                    "triaxial (3D): the compressed axis; y matches fe2dem's triaxial load case, whose "
+                    "vertical axis is y (sigma11 = sigma33 = -Pressure then). 2D: always y.");
   prm.declare_entry("Free shear", "false", dealii::Patterns::Bool(),
                     "isotropic, biaxial, triaxial: also hold the shear stresses at 0 through the "
                     "upper shear components of F (2D: sigma12 through F12; 3D: sigma12, sigma13, "
@@ -66,6 +69,7 @@ void PathParameters::parse_parameters(dealii::ParameterHandler& prm, const std::
   stress_tolerance = prm.get_double("Stress tolerance");
   max_stress_iterations = prm.get_integer("Max stress iterations");
   free_shear = prm.get_bool("Free shear");
+  axial_y = prm.get("Axial direction") == "y";
   isotropic_components = prm.get("Isotropic control") == "each component";
   prm.leave_subsection();
   if (type == "isotropic" && (pressure <= 0.0 || isotropic_steps == 0))

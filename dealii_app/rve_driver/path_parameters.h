@@ -24,6 +24,7 @@ struct PathParameters
   std::string table_file;
   double stress_tolerance;
   bool free_shear;           ///< also hold sigma12 = 0 through F12 (as the macro biaxial test)
+  bool axial_y = false;      ///< triaxial (3D): compress along y instead of z (fe2dem's vertical axis)
   bool isotropic_components; ///< isotropic stage: sigma11 = sigma22 = -p through F11, F22 (F12 = 0)
   unsigned int max_stress_iterations;
 

@@ -51,7 +51,9 @@ std::vector<int> operator+(std::vector<int> a, const std::vector<int>& b)
 
 template <int dim>
 RvePathRunner<dim>::RvePathRunner(const Parameters& parameters)
-  : prm_(parameters), rve_(checked(parameters.rve.setup("none")))
+  : axial(dim == 2 ? 3 : parameters.path.axial_y ? 4 : 8),
+    lateral(parameters.path.axial_y ? std::array<int, 2>{0, 8} : std::array<int, 2>{0, 4}),
+    prm_(parameters), rve_(checked(parameters.rve.setup("none")))
 {
   // A first guess of the stiffness d sigma / d F; the secant iteration
   // corrects it after the first trial. 2D: ~ k_n (stress in N/m). 3D (Pa):
@@ -108,7 +110,7 @@ void RvePathRunner<dim>::write_row(const Result& r, unsigned int stress_iteratio
        << stress_iterations << ',' << membrane_steps_in_step_ << ','
        << fe2dem::fabric_deviator(r.contacts.fabric) << '\n';
   csv_.flush();
-  const char* axial_name = dim == 2 ? "22" : "33";
+  const char* axial_name = axial == 8 ? "33" : "22";
   std::cout << "step " << std::setw(3) << step_ << "  F11 " << std::setw(9) << r.F[0] << "  F"
             << axial_name << " " << std::setw(9) << r.F[axial] << "  F12 " << std::setw(9) << r.F[1]
             << "  sigma11 " << std::setw(11) << r.sigma[0] << "  sigma" << axial_name << " "
@@ -243,8 +245,9 @@ void RvePathRunner<dim>::run_isotropic_stage()
   }
 }
 
-// Axial compression along the last axis at constant lateral stress: biaxial
-// in 2D (sigma11 = -p), triaxial in 3D (sigma11 = sigma22 = -p).
+// Axial compression at constant lateral stress: biaxial in 2D (along y,
+// sigma11 = -p), triaxial in 3D (along z, sigma11 = sigma22 = -p, or along y,
+// sigma11 = sigma33 = -p).
 template <int dim>
 void RvePathRunner<dim>::run_biaxial_stage()
 {
@@ -262,17 +265,22 @@ void RvePathRunner<dim>::run_biaxial_stage()
       // Without it the first trial held F11, F22 and the lateral stresses rose
       // with the axial load: 7-15 trials per step on small_3d.
       const Matrix F_now = F_;
-      for (int c : {0, 4})
+      for (int c : lateral)
         F_[c] += F_now[c] - F_last_step[c];
       F_last_step = F_now;
       F_[axial] = F_axial;
       unsigned int its = 0;
       if (prm_.path.free_shear)
-        its = control_components(F_, {0, 4, 1, 2, 5}, {-prm_.path.pressure, -prm_.path.pressure, 0.0, 0.0, 0.0},
-                                 "sigma11, sigma22 and the shear stresses", true);
+        its = control_components(F_, {lateral[0], lateral[1], 1, 2, 5},
+                                 {-prm_.path.pressure, -prm_.path.pressure, 0.0, 0.0, 0.0},
+                                 axial == 8 ? "sigma11, sigma22 and the shear stresses"
+                                            : "sigma11, sigma33 and the shear stresses",
+                                 true);
       else if (prm_.path.pressure > 0.0)
-        its = control_components(F_, {0, 4}, {-prm_.path.pressure, -prm_.path.pressure},
-                                 "the lateral stresses sigma11, sigma22", true);
+        its = control_components(F_, {lateral[0], lateral[1]}, {-prm_.path.pressure, -prm_.path.pressure},
+                                 axial == 8 ? "the lateral stresses sigma11, sigma22"
+                                            : "the lateral stresses sigma11, sigma33",
+                                 true);
       else
         solve(F_);
       write_row(rve_.result(), its);

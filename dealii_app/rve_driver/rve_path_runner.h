@@ -3,7 +3,7 @@
  * Drives one RVE (2D or 3D) along a macro path (isotropic compression,
  * biaxial (2D) or triaxial (3D) compression at constant lateral stress,
  * simple shear, F(t) table) and writes rve.csv, one row per converged load
- * step. The axial direction is the last axis (y in 2D, z in 3D).
+ * step. The axial direction is y in 2D, z (or y, 'Axial direction') in 3D.
  *
  * Stress-controlled components are reached by a secant iteration on the
  * matching component of F; the RVE continues from each trial (continuous
@@ -30,7 +30,10 @@ public:
 private:
   using Result = typename ServoRve<dim>::Result;
   using Matrix = Mat<dim>;
-  static constexpr int axial = (dim - 1) * (dim + 1); ///< row-major index of F_dd
+  /// Row-major index of the axial F component: F22 in 2D, F33 (or F22 with 'Axial direction' = y) in 3D.
+  const int axial;
+  /// 3D: the row-major indices of the two lateral normal components.
+  const std::array<int, 2> lateral;
   void open_output();
   void write_row(const Result& r, unsigned int stress_iterations);
   void run_isotropic_stage();

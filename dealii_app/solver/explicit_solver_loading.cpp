@@ -137,6 +137,7 @@ unsigned int ExplicitSolver<dim>::solve_load_step()
       {
         velocity_ = converged_.velocity, acceleration_ = converged_.acceleration, f_int_ = converged_.f_int;
         time_ = converged_.time;
+        ip_ = converged_.ip; // their corotational state is committed every time step
         energy_.unpack(converged_.energy);
       }
     }

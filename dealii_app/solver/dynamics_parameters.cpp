@@ -1,7 +1,6 @@
 // subsection Dynamics of macro_parameters.h.
 #include "macro_parameters.h"
 
-#include <stdexcept>
 
 namespace fe2dem::macro
 {
@@ -43,7 +42,6 @@ void Dynamics::parse_parameters(dealii::ParameterHandler& prm)
   rayleigh_beta = prm.get_double("Rayleigh beta");
   mass_scaling = prm.get_double("Mass scaling");
   prm.leave_subsection();
-  if (!(safety_factor > 0.0))
-    throw std::runtime_error("subsection Dynamics: 'Safety factor' = 0; give a value in (0, 1], e.g. 0.9");
+  require_positive("Dynamics", {{"Safety factor", safety_factor}});
 }
 } // namespace fe2dem::macro

@@ -99,9 +99,10 @@ private:
   void start_dynamics();
   /// One output interval in time steps; returns their number.
   unsigned int integrate_load_step();
-  /// Velocity and acceleration of the prescribed dofs at time @p t (differences over @p dt).
+  /// Velocity and acceleration of the prescribed dofs at time @p t (differences over @p dt),
+  /// given their displacements @p now at @p t.
   std::pair<CentralDifferenceIntegrator::Values, CentralDifferenceIntegrator::Values>
-  prescribed_motion(double t, double dt) const;
+  prescribed_motion(double t, double dt, const CentralDifferenceIntegrator::Values& now) const;
 
   unsigned int relax_load_step();
   void inject_fault_if_due(bool first_attempt);

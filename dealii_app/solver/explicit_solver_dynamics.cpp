@@ -29,9 +29,8 @@ void ExplicitSolver<dim>::start_dynamics()
 {
   time_ = 0.0;
   load_fraction_ = 0.0;
-  const double dt = central_difference_->time_step();
-  const auto [v0, a0] = prescribed_motion(0.0, dt);
   boundary_values_ = load_case_->constraints(stage_, 0.0);
+  const auto [v0, a0] = prescribed_motion(0.0, central_difference_->time_step(), boundary_values_);
   for (const auto& [i, value] : boundary_values_)
     displacement_[i] = value;
   velocity_ = 0.0;
@@ -50,11 +49,12 @@ void ExplicitSolver<dim>::start_dynamics()
 // differences of their displacements over +-dt (one-sided at t = 0).
 template <int dim>
 std::pair<CentralDifferenceIntegrator::Values, CentralDifferenceIntegrator::Values>
-ExplicitSolver<dim>::prescribed_motion(const double t, const double dt) const
+ExplicitSolver<dim>::prescribed_motion(const double t, const double dt,
+                                       const CentralDifferenceIntegrator::Values& now) const
 {
   const double T = prm_.loading.end_time;
   const auto at = [&](double s) { return load_case_->constraints(stage_, s / T); };
-  const auto now = at(t), later = at(t + dt);
+  const auto later = at(t + dt);
   const auto earlier = t - dt >= 0.0 ? at(t - dt) : now;
   const double back = t - dt >= 0.0 ? dt : 0.0;
   CentralDifferenceIntegrator::Values v, a;
@@ -85,7 +85,7 @@ unsigned int ExplicitSolver<dim>::integrate_load_step()
     f_int_previous_ = f_int_;
     assemble_internal_force(); // the viscous hourglass form sees v^{n+1/2}
     load_case_->external_force(stage_, load_fraction_, dof_handler_, displacement_, f_ext_);
-    const auto [v, a] = prescribed_motion(t, dt);
+    const auto [v, a] = prescribed_motion(t, dt, boundary_values_);
     central_difference_->correct(velocity_, acceleration_, f_int_, f_int_previous_, f_ext_, dt, v, a);
     energy_.record(displacement_, f_int_, external_with_reactions(), f_hourglass_,
                    central_difference_->kinetic_energy(velocity_, acceleration_, dt));

@@ -178,12 +178,19 @@ void HistoryWriter::append(int step, double axial_strain, const std::vector<IpRe
     append_row(file_, name, type, n_steps_, v.data());
     offset += w;
   };
-  columns("F", "1", "deformation gradient dx/dX, row-major 11 12 21 22", n, 0.0);
-  columns("P", "N/m", "first Piola-Kirchhoff stress, row-major, tension positive", n, 0.0);
-  columns("sigma", "N/m", "Cauchy stress P F^T / det F, row-major, tension positive", n, 0.0);
+  // 2D stresses are forces per length, 3D ones per area.
+  const char* stress_unit = dim == 2 ? "N/m" : "Pa";
+  columns("F", "1",
+          dim == 2 ? "deformation gradient dx/dX, row-major 11 12 21 22"
+                   : "deformation gradient dx/dX, row-major 11 12 13 21 22 23 31 32 33",
+          n, 0.0);
+  columns("P", stress_unit, "first Piola-Kirchhoff stress, row-major, tension positive", n, 0.0);
+  columns("sigma", stress_unit, "Cauchy stress P F^T / det F, row-major, tension positive", n, 0.0);
   RveStatistics<dim>().for_each([&](const char* name, const char* unit, const char* description,
                                     const auto& kind) {
     using T = std::decay_t<decltype(kind)>;
+    if (std::string(unit) == "N/m")
+      unit = stress_unit;
     if constexpr (std::is_same_v<T, long>)
       columns(name, unit, description, 0, 0L);
     else

@@ -7,7 +7,8 @@
  *
  * Layout: /ip_position [n_ip][dim]; per step s (first index, extendible):
  * /step [s], /axial_strain [s], /F, /P, /sigma [s][n_ip][dim*dim]
- * (row-major 11 12 21 22; sigma is the macro Cauchy stress P F^T / J),
+ * (row-major 11 12 21 22, in 3D 11 12 13 21 ... 33; sigma is the macro Cauchy
+ * stress P F^T / J; stresses in N/m in 2D, Pa in 3D),
  * then one dataset per statistic under its name: tensors
  * [s][n_ip][dim*dim], scalars [s][n_ip] (double), counts [s][n_ip] (long).
  * Every dataset has the string attributes `unit` and `description`.

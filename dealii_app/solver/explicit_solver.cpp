@@ -378,12 +378,20 @@ void ExplicitSolver<dim>::assemble_one_point_force()
 // Too few DEM steps per iteration let the RVE stresses lag the macro motion
 // so much that (M9) is never reached (2x4 with 10 steps: benchmarks/perf);
 // after max_bounded iterations the step continues with full solves.
+// With 'Ramp iterations' = N > 0 the step's load (prescribed displacements
+// and external forces) grows linearly over its first N iterations, and (M9)
+// is tested only once it is complete.
 template <int dim>
-unsigned int ExplicitSolver<dim>::relax_load_step()
+unsigned int ExplicitSolver<dim>::relax_load_step(const double fraction_begin)
 {
   const DynamicRelaxation& dr = prm_.relaxation;
+  const unsigned int ramp = dr.ramp_iterations;
+  const double fraction_end = load_fraction_;
+  const auto fraction_at = [&](unsigned int it) {
+    return it >= ramp ? fraction_end : fraction_begin + (fraction_end - fraction_begin) * it / ramp;
+  };
   velocity_ = 0.0;
-  apply_boundary_values();
+  apply_boundary_values(fraction_at(1));
   integrator_->start();
   const unsigned int max_bounded = 1000;
   bool bounded = material_->has_step_limit() && prm_.material.steps_per_iteration > 0;
@@ -393,10 +401,12 @@ unsigned int ExplicitSolver<dim>::relax_load_step()
   {
     if (const int signal = stop_signal_received())
       throw StopSignal{signal};
+    if (it > 1 && it <= ramp)
+      apply_boundary_values(fraction_at(it));
     assemble_internal_force();
-    load_case_->external_force(stage_, load_fraction_, dof_handler_, displacement_, f_ext_);
+    load_case_->external_force(stage_, fraction_at(it), dof_handler_, displacement_, f_ext_);
     const double e_kin = integrator_->advance(displacement_, velocity_, f_int_, f_ext_, boundary_values_);
-    const bool relaxed = integrator_->converged(it, e_kin);
+    const bool relaxed = it >= ramp && integrator_->converged(it, e_kin);
     if (bounded && (relaxed || it >= max_bounded))
     {
       bounded = false;

@@ -82,7 +82,8 @@ private:
   void make_material(const std::string& checkpoint);
   /// The neo-Hookean law or the RVEs, before the corotational wrapper.
   void make_constitutive_material(const std::string& checkpoint);
-  void apply_boundary_values();
+  /// Prescribed displacements of the load fraction @p fraction, at rest.
+  void apply_boundary_values(double fraction);
   void update_stresses();
   /// update_stresses(), then assemble_forces_from_stresses().
   void assemble_internal_force();
@@ -104,7 +105,8 @@ private:
   std::pair<CentralDifferenceIntegrator::Values, CentralDifferenceIntegrator::Values>
   prescribed_motion(double t, double dt, const CentralDifferenceIntegrator::Values& now) const;
 
-  unsigned int relax_load_step();
+  /// @param fraction_begin the load fraction the step starts from (the ramp's start).
+  unsigned int relax_load_step(double fraction_begin);
   void inject_fault_if_due(bool first_attempt);
   void finish_isotropic_stage();
   /// The step's F becomes every IP's F_last_step (after its output).

@@ -103,12 +103,13 @@ unsigned int ExplicitSolver<dim>::solve_load_step()
   const Vector<double> start = displacement_;
   while (done < 1.0)
   {
+    const double fraction_begin = (static_cast<double>(step_in_stage_ - 1) + done) / n;
     load_fraction_ = (static_cast<double>(step_in_stage_ - 1) + (done + size)) / n;
     try
     {
       inject_fault_if_due(first_attempt);
       first_attempt = false;
-      iterations += prm_.dynamics.dynamic ? integrate_load_step() : relax_load_step();
+      iterations += prm_.dynamics.dynamic ? integrate_load_step() : relax_load_step(fraction_begin);
       done += size;
     }
     catch (const CouplerError& e)
@@ -266,9 +267,9 @@ double ExplicitSolver<dim>::strain_energy() const
 }
 
 template <int dim>
-void ExplicitSolver<dim>::apply_boundary_values()
+void ExplicitSolver<dim>::apply_boundary_values(const double fraction)
 {
-  boundary_values_ = load_case_->constraints(stage_, load_fraction_);
+  boundary_values_ = load_case_->constraints(stage_, fraction);
   for (const auto& [i, value] : boundary_values_)
   {
     displacement_[i] = value;

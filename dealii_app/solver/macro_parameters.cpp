@@ -138,6 +138,13 @@ void DynamicRelaxation::declare_parameters(dealii::ParameterHandler& prm)
                     "the step (after the peak).");
   prm.declare_entry("Max iterations", "100000", Integer(1), "Iteration budget of one load step.");
   prm.declare_entry("Min iterations", "10", Integer(1), "Iterations before (M9) is tested.");
+  prm.declare_entry("Ramp iterations", "0", Integer(0),
+                    "The load increment of a step (prescribed displacements, tractions, "
+                    "pressures) grows linearly over this many iterations instead of being "
+                    "applied at the first, and (M9) is tested only after them. With frictional "
+                    "RVEs under mixed control it keeps the path inside a step close to the "
+                    "quasi-static one (the free dofs follow the load instead of catching up "
+                    "after it). 0: at once (the paper's scheme).");
   prm.leave_subsection();
 }
 
@@ -149,6 +156,7 @@ void DynamicRelaxation::parse_parameters(dealii::ParameterHandler& prm)
   kinetic_tolerance = prm.get_double("Kinetic energy tolerance");
   max_iterations = prm.get_integer("Max iterations");
   min_iterations = prm.get_integer("Min iterations");
+  ramp_iterations = prm.get_integer("Ramp iterations");
   prm.leave_subsection();
   require_positive("Dynamic relaxation", {{"Safety factor", safety_factor},
                                                       {"Kinetic energy tolerance", kinetic_tolerance}});

@@ -73,6 +73,7 @@ struct DynamicRelaxation
 {
   double damping_ratio, safety_factor, kinetic_tolerance;
   unsigned int max_iterations, min_iterations;
+  unsigned int ramp_iterations; ///< the step's load grows over this many iterations (0: at once)
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm);
 };

@@ -160,6 +160,11 @@ void DynamicRelaxation::parse_parameters(dealii::ParameterHandler& prm)
   prm.leave_subsection();
   require_positive("Dynamic relaxation", {{"Safety factor", safety_factor},
                                                       {"Kinetic energy tolerance", kinetic_tolerance}});
+  if (ramp_iterations >= max_iterations)
+    throw std::runtime_error("subsection Dynamic relaxation: 'Ramp iterations' = " +
+                             std::to_string(ramp_iterations) + " leaves no iteration of 'Max "
+                             "iterations' = " + std::to_string(max_iterations) +
+                             " to converge in; lower it or raise 'Max iterations'");
 }
 
 void Loading::declare_parameters(dealii::ParameterHandler& prm)

@@ -2,13 +2,16 @@
 """One-element verification: fe2dem summary.csv (1x1 mesh) against fe2dem-rve
 rve.csv on the same packing and path. Axial stress and stress ratio of every
 stage-2 step must agree within TOL (relative, default 0.02).
-Usage: compare_one_element.py SUMMARY_CSV RVE_CSV ISOTROPIC_STEPS [TOL]"""
+Usage: compare_one_element.py SUMMARY_CSV RVE_CSV ISOTROPIC_STEPS [TOL] [STRIDE]
+  STRIDE: fe2dem-rve loading steps per fe2dem load step (default 1), for a
+  reference path in finer steps; every STRIDE-th row is compared."""
 import csv
 import sys
 
 macro = [r for r in csv.DictReader(open(sys.argv[1])) if r["stage"] == "2"]
-rve = list(csv.DictReader(open(sys.argv[2])))[int(sys.argv[3]) + 1:]
 tol = float(sys.argv[4]) if len(sys.argv) > 4 else 0.02
+stride = int(sys.argv[5]) if len(sys.argv) > 5 else 1
+rve = list(csv.DictReader(open(sys.argv[2])))[int(sys.argv[3]) + 1:][stride - 1::stride]
 fails = 0
 if len(macro) != len(rve) or not macro:
     print(f"FAIL: {len(macro)} macro rows vs {len(rve)} RVE rows")

@@ -10,7 +10,8 @@
  * double; count: integer), name (history.h5 dataset), unit, description,
  * source (an expression on `r`, the fix's FixRveServo<2>::Result; expanded
  * only on the LIGGGHTS side of the coupler).
- * Conventions: tension positive; 2D stresses are force per length.
+ * Conventions: tension positive; stresses in `stress_unit`: force per length
+ * (N/m) in 2D, per area (Pa) in 3D.
  */
 #pragma once
 
@@ -24,7 +25,7 @@
   X(scalar, anisotropy, "1", "fabric anisotropy Pi_1/Pi_2 - 1", r.contacts.anisotropy)               \
   X(count, servo_iterations, "1", "servo corrections of the last solve", r.servo_iterations)        \
   X(count, dem_steps, "1", "DEM steps of the last solve (0 if it was skipped)", r.dem_steps)         \
-  X(tensor, sigma_lw, "N/m", "Love-Weber stress of the contacts (R8), tension positive", r.sigma_lw)  \
+  X(tensor, sigma_lw, stress_unit, "Love-Weber stress of the contacts (R8), tension positive", r.sigma_lw)  \
   X(scalar, mechanical_coordination, "1", "(2C - N1)/(N - N0 - N1) (Thornton)",                        \
     r.contacts.mechanical_coordination)                                                               \
   X(scalar, packing_fraction, "1", "solid area fraction of the periodic cell", r.packing_fraction)   \
@@ -66,6 +67,8 @@ struct StatisticType<dim, count>
 template <int dim>
 struct RveStatistics
 {
+  /// The unit of the stress entries (and of F, P, sigma beside them).
+  static constexpr const char* stress_unit = dim == 2 ? "N/m" : "Pa";
 #define FE2DEM_MEMBER(kind, name, unit, description, source)                                        \
   typename detail::StatisticType<dim, detail::kind>::type name{};
   FE2DEM_RVE_STATISTICS(FE2DEM_MEMBER)

@@ -178,8 +178,7 @@ void HistoryWriter::append(int step, double axial_strain, const std::vector<IpRe
     append_row(file_, name, type, n_steps_, v.data());
     offset += w;
   };
-  // 2D stresses are forces per length, 3D ones per area.
-  const char* stress_unit = dim == 2 ? "N/m" : "Pa";
+  const char* stress_unit = RveStatistics<dim>::stress_unit;
   columns("F", "1",
           dim == 2 ? "deformation gradient dx/dX, row-major 11 12 21 22"
                    : "deformation gradient dx/dX, row-major 11 12 13 21 22 23 31 32 33",
@@ -189,8 +188,6 @@ void HistoryWriter::append(int step, double axial_strain, const std::vector<IpRe
   RveStatistics<dim>().for_each([&](const char* name, const char* unit, const char* description,
                                     const auto& kind) {
     using T = std::decay_t<decltype(kind)>;
-    if (std::string(unit) == "N/m")
-      unit = stress_unit;
     if constexpr (std::is_same_v<T, long>)
       columns(name, unit, description, 0, 0L);
     else

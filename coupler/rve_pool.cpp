@@ -224,6 +224,14 @@ void RvePool<dim>::set_step_limit(long steps)
 }
 
 template <int dim>
+void RvePool<dim>::set_timed_steps(long steps)
+{
+  for (auto& [k, rve] : local_)
+    rve->set_timed_steps(steps);
+  timed_steps_ = steps;
+}
+
+template <int dim>
 void RvePool<dim>::commit()
 {
   for (auto& [k, rve] : local_)
@@ -279,6 +287,7 @@ void RvePool<dim>::move(std::size_t k, int to)
     {
       local_[k] = factory_->restore(state);
       local_[k]->set_step_limit(step_limit_);
+      local_[k]->set_timed_steps(timed_steps_);
     }
   }
   owner_[k] = to;

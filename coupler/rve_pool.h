@@ -91,6 +91,8 @@ public:
    * false; see Rve::set_step_limit). 0 (default): every solve runs to convergence.
    */
   void set_step_limit(long steps);
+  /// Explicit dynamics: every solve() advances each RVE by @p steps DEM steps (Rve::set_timed_steps).
+  void set_timed_steps(long steps);
 
   /// Accepts the last solves as the converged load step.
   void commit();
@@ -152,5 +154,6 @@ private:
   double local_seconds_ = 0.0;
   double skip_tolerance_ = 0.0;
   long step_limit_ = 0;
+  long timed_steps_ = 0;
 };
 } // namespace fe2dem

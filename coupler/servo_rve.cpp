@@ -121,7 +121,9 @@ const typename ServoRve<dim>::Result& ServoRve<dim>::solve(const Matrix& F, long
   if (mode_ == HistoryMode::committed && !at_committed_state_)
     rollback();
   at_committed_state_ = false;
-  const bool bounded = limit_steps(step_limit);
+  const bool bounded = timed_steps_ == 0 && limit_steps(step_limit);
+  if (fix_->timed_steps() != timed_steps_)
+    fix_->set_timed_steps(timed_steps_);
   fix_->set_deformation(F);
   run_until_done(bounded);
   return fix_->result();

@@ -74,6 +74,8 @@ public:
   const RveResponse<dim>& solve_increment(const Tensor& d_eps) override;
   const RveResponse<dim>& response() const override;
   void set_step_limit(long steps) override { step_limit_ = steps; }
+  /// Applied to the fix (FixRveServo::set_timed_steps) at every solve, restored instances included.
+  void set_timed_steps(long steps) override { timed_steps_ = steps; }
   void set_step_budget(long steps) override;
   /// Accepts the current state as the converged load step.
   void commit() override;
@@ -117,6 +119,7 @@ private:
   bool limited_ = false; ///< the fix's max_steps is currently a bound of limit_steps()
   bool last_converged_ = true;
   long step_limit_ = 0;               ///< of set_step_limit()
+  long timed_steps_ = 0;              ///< of set_timed_steps()
   mutable RveResponse<dim> response_;   ///< rve_to_macro of the fix's result
 };
 

@@ -4,6 +4,7 @@
 //   fix_rve_servo_input.tpp     keywords, deformation input, checks from init()
 //   fix_rve_servo_solve.tpp     servo state machine and homogenisation
 //   fix_rve_servo_restart.tpp   the state in restart files
+//   fix_rve_servo_timed.tpp     timed solves (explicit dynamics of the macro scale)
 //   fix_rve_servo_membrane.tpp  the frame membrane (2D), dispatch to
 //   fix_rve_servo_membrane_3d.tpp  the 3D frame membrane
 #include "fix_rve_servo.tpp"
@@ -12,6 +13,7 @@
 #include "fix_rve_servo_membrane_3d.tpp"
 #include "fix_rve_servo_restart.tpp"
 #include "fix_rve_servo_solve.tpp"
+#include "fix_rve_servo_timed.tpp"
 
 namespace LAMMPS_NS
 {

@@ -53,6 +53,12 @@
  * `fix_modify ID F f11 f12 f21 f22` (3D: nine values) starts a new solve under a new F;
  * `fix_modify ID max_steps N` changes the step budget (not kept in restarts). The
  * solve advances while the script (or C++) runs steps; f_ID[1] is the status.
+ * `fix_modify ID timed_steps N` (N a multiple of check_every; 0: off, the default;
+ * not kept in restarts) makes later solves timed, for explicit dynamics of the
+ * macro scale: exactly N steps, the frame moving at constant velocity to the new
+ * F with the fluctuations of the last quasi-static state, no servo corrections
+ * and no convergence stop; P and the stresses are their means over the solve's
+ * checks (fix_rve_servo_timed.tpp).
  *
  * The fix integrates every particle itself (do not add fix nve/sphere):
  * inner particles by velocity Verlet with local damping, frame particles by
@@ -183,6 +189,14 @@ public:
   void set_deformation(const Tensor& F);
   /// Step budget of the solves from now on, as `fix_modify ID max_steps` sets it. @pre n >= 1.
   void set_max_steps(long n);
+  /**
+   * Timed solves from the next F on (explicit dynamics), as `fix_modify ID
+   * timed_steps` sets it: each runs exactly @p n DEM steps, n dt of physical
+   * time, and reports the mean stresses of its checks. 0: quasi-static solves.
+   * @pre n = 0 or a positive multiple of check_every (else a LIGGGHTS error).
+   */
+  void set_timed_steps(long n);
+  long timed_steps() const { return timed_steps_; }
   Status status() const { return status_; }
   static const char* status_name(Status s);
   const Result& result() const { return result_; }
@@ -250,6 +264,10 @@ private:
   }
   void apply_servo_correction();
   void fail(Status s, const std::string& reason);
+  // --- timed solves (fix_rve_servo_timed.tpp) ------------------------------
+  void begin_timed_solve();
+  /// A check of a timed solve: homogenise, filter, finish at its last step.
+  void timed_check(long step);
   /// The contact of contacts_ with the largest overlap, for messages.
   std::string describe_largest_overlap() const;
   /// Stops with an error if the packing's centres do not fit the dimension (z = 0 in 2D).
@@ -417,6 +435,11 @@ private:
   int checks_since_contact_pass_ = 0;
   double dtv_ = 0.0, dtf_ = 0.0;
   bool restored_ = false; ///< state came from a restart file
+
+  // timed solves: DEM steps per solve (0: quasi-static) and the box filter's sums
+  long timed_steps_ = 0;
+  int timed_samples_ = 0;
+  Tensor timed_P_sum_{}, timed_sigma_sum_{}, timed_sigma_lw_sum_{};
 };
 } // namespace LAMMPS_NS
 

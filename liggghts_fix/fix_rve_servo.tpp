@@ -577,6 +577,18 @@ int FixRveServo<dim>::modify_param(int narg, char** arg)
     set_max_steps(static_cast<long>(n));
     return 2;
   }
+  if (std::strcmp(arg[0], "timed_steps") == 0)
+  {
+    if (narg < 2)
+      error->fix_error(FLERR, this, "fix_modify keyword 'timed_steps' needs 1 value");
+    char* end = nullptr;
+    const double n = std::strtod(arg[1], &end);
+    if (*end != '\0' || !(n >= 0.0 && n <= 1e9) || n != std::floor(n))
+      error->fix_error(FLERR, this, (std::string("fix_modify keyword 'timed_steps': '") + arg[1] +
+                                     "' is not an integer in [0, 1e9]").c_str());
+    set_timed_steps(static_cast<long>(n));
+    return 2;
+  }
   return 0;
 }
 

@@ -41,6 +41,8 @@ void FixRveServo<dim>::begin_solve(const Tensor* F)
   checks_since_contact_pass_ = 1 << 30; // first relaxed check of a solve: fresh contact pass
   solve_pending_ = false;
   schedule_frame_move(F_before);
+  if (timed_steps_ > 0)
+    begin_timed_solve();
   // inner_start affine: the inner particles get the velocity field of the
   // affine motion F_before -> F while the frame moves (see initial_integrate).
   // (The time step may not be known yet: the first solve can begin before init().)
@@ -96,6 +98,8 @@ void FixRveServo<dim>::end_of_step()
   if (status_ != running)
     return;
   const long step = ++result_.dem_steps;
+  if (timed_steps_ > 0)
+    return timed_check(step);
   if (step % check_every_ != 0 && step < max_steps_)
     return;
   const double ekin = check_particles();

@@ -22,7 +22,8 @@ if [[ $np_killed -eq 1 ]]; then setsid "$exe" case.prm > killed.log 2>&1 &
 else setsid mpiexec --allow-run-as-root --oversubscribe -np "$np_killed" "$exe" case.prm > killed.log 2>&1 &
 fi
 pid=$!
-newest() { ls out/checkpoints 2> /dev/null | grep -E '^checkpoint-[0-9]{6}\.h5$' | tail -n 1 | tr -dc 0-9 | sed 's/^0*//'; }
+# (The load step of the newest checkpoint; the digit of '.h5' is not part of it.)
+newest() { ls out/checkpoints 2> /dev/null | sed -n 's/^checkpoint-0*\([0-9][0-9]*\)\.h5$/\1/p' | sort -n | tail -n 1; }
 for _ in $(seq 1200); do
   [[ $(newest) -ge $after_step ]] 2> /dev/null && break
   kill -0 $pid 2> /dev/null || break

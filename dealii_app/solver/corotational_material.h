@@ -55,6 +55,7 @@ public:
   }
   bool has_step_limit() const override { return inner_->has_step_limit(); }
   void set_step_limit(long steps) override { inner_->set_step_limit(steps); }
+  void set_timed_steps(long dem_steps) override { inner_->set_timed_steps(dem_steps); }
   void commit() override { inner_->commit(); }
   void rollback() override { inner_->rollback(); }
   void rebalance() override { inner_->rebalance(); }

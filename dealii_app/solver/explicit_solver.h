@@ -185,6 +185,9 @@ private:
   std::unique_ptr<CentralDifferenceIntegrator> central_difference_; ///< dynamic
   dealii::Vector<double> acceleration_, f_int_previous_;           ///< dynamic
   double time_ = 0.0; ///< dynamic: the physical time of the state
+  /// dynamic with RVEs: DEM steps per macro step and that step (0: no RVEs)
+  long dem_steps_per_macro_step_ = 0;
+  double macro_time_step_ = 0.0;
   std::unique_ptr<HistoryWriter> history_file_;
   std::map<dealii::types::global_dof_index, double> boundary_values_;
   dealii::Vector<double> mass_, displacement_, velocity_, f_int_, f_ext_;

@@ -7,20 +7,62 @@
 
 #include <cmath>
 #include <iomanip>
+#include <sstream>
 
 namespace fe2dem::macro
 {
 using namespace dealii;
 
 // omega_max with the wave speed of the scaled mass (c / sqrt(mass scaling)).
+// With RVEs every macro step is the same whole number of DEM steps, so that
+// each RVE advances exactly the macro step's physical time: the largest
+// multiple of the RVE check interval (a timed solve ends on a check) whose
+// time is not above the integrator's step and that divides the output
+// interval, if it is a whole number of checks.
 template <int dim>
 void ExplicitSolver<dim>::make_central_difference()
 {
   central_difference_ = std::make_unique<CentralDifferenceIntegrator>(
     prm_.dynamics, mass_, highest_frequency() / std::sqrt(prm_.dynamics.mass_scaling));
+  if (prm_.material.type == MaterialParameters::Type::rve)
+  {
+    const double dt_dem = prm_.rve.time_step, dt_max = central_difference_->time_step();
+    const long every = prm_.rve.check_interval;
+    const long most_checks = static_cast<long>(std::floor(dt_max / (every * dt_dem) * (1.0 + 1e-12)));
+    // An output interval of a whole number K of checks is split into equal
+    // macro steps (d checks, d the largest divisor of K allowed), so that
+    // the rows fall on the requested times; otherwise rows fall on the grid.
+    const double interval_checks = prm_.loading.end_time / total_steps() / (every * dt_dem);
+    const long K = std::lround(interval_checks);
+    long checks = most_checks;
+    if (K >= 1 && std::abs(interval_checks - K) <= 1e-9 * K)
+      for (checks = std::min(most_checks, K); checks > 0 && K % checks != 0; --checks)
+        ;
+    else
+      pcout_ << "explicit dynamics: an output interval is not a whole number of RVE checks ("
+             << interval_checks << " x " << every << " DEM steps); rows are written at the "
+             << "multiples of the macro step nearest to the requested times" << std::endl;
+    dem_steps_per_macro_step_ = checks * every;
+    if (dem_steps_per_macro_step_ < every)
+    {
+      std::ostringstream msg;
+      msg << "subsection Dynamics: the macro time step " << dt_max << " (critical step "
+          << central_difference_->critical_step() << ") is shorter than one check interval of the "
+          << "RVEs, 'Check interval' x 'Time step' = " << every << " x " << dt_dem << " = "
+          << every * dt_dem << " of subsection RVE, but each macro step must be a whole number "
+          << "of checks of DEM steps; lower 'Check interval' in subsection RVE, or allow a longer "
+          << "macro step ('Mass scaling', a coarser mesh, a lower 'Stability modulus' if it "
+          << "overestimates the RVE's stiffness)";
+      throw std::runtime_error(msg.str());
+    }
+    macro_time_step_ = dem_steps_per_macro_step_ * dt_dem;
+  }
+  const double dt = macro_time_step_ > 0.0 ? macro_time_step_ : central_difference_->time_step();
   pcout_ << "explicit dynamics: critical step " << central_difference_->critical_step() << ", step "
-         << central_difference_->time_step() << ", about "
-         << std::ceil(prm_.loading.end_time / central_difference_->time_step()) << " steps" << std::endl;
+         << dt;
+  if (macro_time_step_ > 0.0)
+    pcout_ << " (" << dem_steps_per_macro_step_ << " DEM steps of " << prm_.rve.time_step << ")";
+  pcout_ << ", about " << std::ceil(prm_.loading.end_time / dt) << " steps" << std::endl;
 }
 
 // t = 0: u and v of the prescribed dofs, at rest elsewhere; a from the forces.
@@ -66,19 +108,34 @@ ExplicitSolver<dim>::prescribed_motion(const double t, const double dt,
   return {v, a};
 }
 
-// One output interval, from time_ to the end time of the load step.
+// One output interval, from time_ to the end time of the load step: in
+// equal steps no longer than the integrator's step, or with RVEs in whole
+// macro steps on the grid j * macro_time_step_ (the interval then ends on
+// the grid time nearest to its end, at least one step on).
 template <int dim>
 unsigned int ExplicitSolver<dim>::integrate_load_step()
 {
-  const double T = prm_.loading.end_time, t_begin = time_, t_end = load_fraction_ * T;
-  const unsigned int n = static_cast<unsigned int>(
-    std::max(1.0, std::ceil((t_end - t_begin) / central_difference_->time_step() * (1.0 - 1e-12))));
+  const double T = prm_.loading.end_time, t_begin = time_;
+  double t_end = load_fraction_ * T;
+  unsigned int n = 0;
+  long j_begin = 0; // grid index of t_begin (RVEs)
+  if (macro_time_step_ > 0.0)
+  {
+    j_begin = std::lround(t_begin / macro_time_step_);
+    n = static_cast<unsigned int>(std::max(1L, std::lround((t_end - t_begin) / macro_time_step_)));
+    t_end = static_cast<double>(j_begin + n) * macro_time_step_;
+  }
+  else
+    n = static_cast<unsigned int>(
+      std::max(1.0, std::ceil((t_end - t_begin) / central_difference_->time_step() * (1.0 - 1e-12))));
   const double dt = (t_end - t_begin) / n;
   for (unsigned int k = 1; k <= n; ++k)
   {
     if (const int signal = stop_signal_received())
       throw StopSignal{signal};
-    const double t = k == n ? t_end : t_begin + (t_end - t_begin) * k / n;
+    const double t = macro_time_step_ > 0.0 ? static_cast<double>(j_begin + k) * macro_time_step_
+                     : k == n             ? t_end
+                                          : t_begin + (t_end - t_begin) * k / n;
     load_fraction_ = t / T;
     boundary_values_ = load_case_->constraints(stage_, load_fraction_);
     central_difference_->predict(displacement_, velocity_, acceleration_, dt, boundary_values_);

@@ -44,6 +44,9 @@ void ExplicitSolver<dim>::run()
     }
     energy_.start(displacement_, f_int_, external_with_reactions(), f_hourglass_);
   }
+  // RVEs relax quasi-statically under the initial F (start_dynamics), then advance in time.
+  if (dem_steps_per_macro_step_ > 0)
+    material_->set_timed_steps(dem_steps_per_macro_step_);
   open_output_files(checkpoint);
   save_converged_state();
   try
@@ -114,14 +117,17 @@ unsigned int ExplicitSolver<dim>::solve_load_step()
     }
     catch (const CouplerError& e)
     {
-      if (!prm_.faults.cut_step || cuts == prm_.faults.max_cuts)
+      // In dynamics a cut would repeat the same time steps (the step is fixed).
+      if (!prm_.faults.cut_step || cuts == prm_.faults.max_cuts || prm_.dynamics.dynamic)
       {
         const std::string file = write_checkpoint();
         throw CouplerError(
           e.ip_id, std::string(e.what()) + "\n" +
-                     (prm_.faults.cut_step ? "The load step was cut " + std::to_string(cuts) +
-                                               " times ('Max step cuts') without success"
-                                           : std::string("'On RVE failure' = stop")) +
+                     (prm_.dynamics.dynamic ? std::string("In dynamics a load step is not cut (its "
+                                                          "time steps would repeat)")
+                      : prm_.faults.cut_step ? "The load step was cut " + std::to_string(cuts) +
+                                                 " times ('Max step cuts') without success"
+                                             : std::string("'On RVE failure' = stop")) +
                      ": the run stopped after writing " + file + " (last converged load step " +
                      std::to_string(converged_.step) + "). Remove the cause, then continue with: fe2dem " +
                      prm_.file + " --resume");

@@ -128,6 +128,25 @@ void MaterialParameters::parse_parameters(dealii::ParameterHandler& prm)
                                             {"Stability modulus", stability_modulus}});
 }
 
+// In dynamics every RVE advances in time with the macro step (timed solves):
+// from where it is, every step, with no step limit of its own.
+void MaterialParameters::check_for_dynamics() const
+{
+  const std::string why = " ('Analysis' = dynamic of subsection Dynamics: each RVE advances the "
+                          "physical time of every macro step from where it is)";
+  if (history != HistoryMode::continuous)
+    throw std::runtime_error("subsection Material: 'History' = committed cannot be used in "
+                             "dynamics; set 'History' = continuous" + why);
+  if (skip_tolerance > 0.0)
+    throw std::runtime_error("subsection Material: 'Skip tolerance' = " + std::to_string(skip_tolerance) +
+                             " would leave RVEs behind in time; set it to 0" + why);
+  if (steps_per_iteration > 0)
+    throw std::runtime_error("subsection Material: 'DEM steps per iteration' = " +
+                             std::to_string(steps_per_iteration) +
+                             " is for dynamic relaxation; set it to 0: in dynamics the DEM steps "
+                             "per macro step follow from the two time steps" + why);
+}
+
 void DynamicRelaxation::declare_parameters(dealii::ParameterHandler& prm)
 {
   prm.enter_subsection("Dynamic relaxation");
@@ -522,9 +541,7 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
                              "quasi-static); set the boundary conditions as subsections 'Boundary "
                              "condition N' with functions of the time t");
   if (dynamics.dynamic && material.type == MaterialParameters::Type::rve)
-    throw std::runtime_error("subsection Dynamics: 'Analysis' = dynamic works with the neo-Hookean "
-                             "material only so far; RVEs at the quadrature points advance in "
-                             "dynamic relaxation ('Analysis' = quasi-static)");
+    material.check_for_dynamics();
   particle_dumps.parse_parameters(prm);
   checkpoint.parse_parameters(prm);
   parallel.parse_parameters(prm);

@@ -47,6 +47,8 @@ struct MaterialParameters
   long steps_per_iteration; ///< RVE: DEM steps per DR iteration before convergence (0: relax fully)
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm);
+  /// @throws std::runtime_error naming the entry if RVEs cannot run in explicit dynamics so.
+  void check_for_dynamics() const;
 };
 
 /**

@@ -54,6 +54,12 @@ public:
   virtual bool has_step_limit() const { return false; }
   /// Later evaluations run at most @p steps DEM steps per RVE (0: to convergence).
   virtual void set_step_limit(long /*steps*/) {}
+  /**
+   * Explicit dynamics: later evaluations advance every RVE by @p dem_steps
+   * DEM steps, the macro time step (Rve::set_timed_steps). Analytic laws
+   * have no time of their own: nothing to do.
+   */
+  virtual void set_timed_steps(long /*dem_steps*/) {}
   /// The last evaluation is the converged load step.
   virtual void commit() {}
   /// Back to the state of the last commit() (a load-step cut).

@@ -1,0 +1,73 @@
+// fix rve/servo: timed solves for explicit dynamics of the macro scale
+// (physics.md §1.2). A timed solve advances the RVE by a fixed physical
+// time: exactly timed_steps DEM steps, the frame moving towards F X + w at
+// the end of the solve, with no convergence stop. The servo runs as a
+// continuous feedback at every check (it does not wait for a relaxed
+// state): its correction of the fluctuations w and rotations retargets the
+// frame, which reaches the new targets at the end of the solve. Without it
+// the frame is an affine boundary, and the RVE is much stiffer (measured:
+// twice the quasi-static shear stress). The stresses returned are the mean
+// over the solve's checks (a box filter over the macro step), so that the
+// DEM's high-frequency noise does not reach the macro solution.
+#pragma once
+
+#include "fix_rve_servo.h"
+
+#include "error.h"
+
+#include <string>
+
+using namespace LAMMPS_NS;
+
+template <int dim>
+void FixRveServo<dim>::set_timed_steps(long n)
+{
+  if (n < 0 || n % check_every_ != 0)
+    error->fix_error(FLERR, this, ("timed_steps = " + std::to_string(n) + " must be 0 or a positive "
+                                   "multiple of check_every = " + std::to_string(check_every_) +
+                                   " (a timed solve ends on a check)").c_str());
+  timed_steps_ = n;
+}
+
+// At every check of a timed solve: homogenise, add the stresses to the
+// filter; at its last step report their means.
+template <int dim>
+void FixRveServo<dim>::timed_check(long step)
+{
+  if (step % check_every_ != 0 && step < timed_steps_)
+    return;
+  const double ekin = check_particles();
+  if (status_ != running)
+    return;
+  homogenise(ekin);
+  if (status_ != running)
+    return;
+  using fe2dem::operator+;
+  timed_P_sum_ = timed_P_sum_ + result_.P;
+  timed_sigma_sum_ = timed_sigma_sum_ + result_.sigma;
+  timed_sigma_lw_sum_ = timed_sigma_lw_sum_ + result_.sigma_lw;
+  ++timed_samples_;
+  if (step < timed_steps_)
+  {
+    const Tensor affine = affine_step_; // inner_start affine keeps its rate
+    apply_servo_correction();           // retargets the frame: F X + w, new w
+    move_steps_ = static_cast<int>(timed_steps_ - step);
+    affine_step_ = affine;
+    return;
+  }
+  apply_servo_correction(); // the next solve starts towards the corrected w
+  const double w = 1.0 / timed_samples_;
+  result_.P = w * timed_P_sum_;
+  result_.sigma = w * timed_sigma_sum_;
+  result_.sigma_lw = w * timed_sigma_lw_sum_;
+  status_ = converged;
+}
+
+// begin_solve() of a timed solve: the frame move lasts the whole solve.
+template <int dim>
+void FixRveServo<dim>::begin_timed_solve()
+{
+  move_steps_ = static_cast<int>(timed_steps_);
+  timed_samples_ = 0;
+  timed_P_sum_ = timed_sigma_sum_ = timed_sigma_lw_sum_ = Tensor{};
+}

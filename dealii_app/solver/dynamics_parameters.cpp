@@ -13,7 +13,11 @@ void Dynamics::declare_parameters(dealii::ParameterHandler& prm)
                     "(subsection Dynamic relaxation). dynamic: explicit dynamics by central "
                     "differences with the lumped physical mass ('Density' of subsection Material); "
                     "needs 'Boundary' = conditions, whose functions see the physical time t from 0 "
-                    "to 'End time'; 'Load steps' is then the number of output intervals.");
+                    "to 'End time'; 'Load steps' is then the number of output intervals. With RVEs each "
+                    "RVE advances every macro step's physical time (timed solves of fix "
+                    "rve/servo, stresses averaged over the step); the macro step is then a "
+                    "multiple of the RVE 'Check interval' x 'Time step' (README, 'Explicit "
+                    "dynamics with RVEs').");
   prm.declare_entry("Time step", "0", Double(0.0),
                     "dynamic: the time step [time unit]; 0: 'Safety factor' x the critical step "
                     "2/omega_max of the mesh (with damping, the damped one). A step above the "

@@ -34,6 +34,9 @@ void FixRveServo<dim>::set_timed_steps(long n)
 template <int dim>
 void FixRveServo<dim>::timed_check(long step)
 {
+  if (step >= max_steps_ && step < timed_steps_) // the budget still holds (fault injection)
+    return fail(over_budget, "a timed solve of " + std::to_string(timed_steps_) +
+                                 " steps exceeds max_steps = " + std::to_string(max_steps_));
   if (step % check_every_ != 0 && step < timed_steps_)
     return;
   const double ekin = check_particles();

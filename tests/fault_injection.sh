@@ -1,22 +1,22 @@
 #!/usr/bin/env bash
-# An injected RVE fault (subsection Faults, 'Inject fault' = IP 2 at load
+# An injected RVE fault (subsection Faults, 'Inject fault' = IP (2) at load
 # step 3: a step budget of 1) must be reported with IP, position, load step
 # and reason, and handled as chosen:
 #   cut:  the load step is cut and retried; the run completes all rows;
 #   stop: the run stops with exit code 1 after a checkpoint of step 2, and
 #         --resume without the fault completes it identically to REFERENCE.
-# Usage: fault_injection.sh FE2DEM PRM WORKDIR REFERENCE_OUT cut|stop
+# Usage: fault_injection.sh FE2DEM PRM WORKDIR REFERENCE_OUT cut|stop [IP]
 set -uo pipefail
-exe=$1 prm=$2 work=$3 reference=$4 mode=$5
+exe=$1 prm=$2 work=$3 reference=$4 mode=$5 ip=${6:-2}
 tests=$(cd "$(dirname "$0")" && pwd)
 reaction=$([[ $mode == cut ]] && echo "cut step" || echo stop)
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
 sed 's#^set Output directory.*#set Output directory = out#' "$prm" > clean.prm
-{ cat clean.prm; printf '\nsubsection Faults\n  set On RVE failure = %s\n  set Inject fault = 2 3\nend\n' "$reaction"; } > case.prm
+{ cat clean.prm; printf '\nsubsection Faults\n  set On RVE failure = %s\n  set Inject fault = %s 3\nend\n' "$reaction" "$ip"; } > case.prm
 "$exe" case.prm > run.log 2>&1; rc=$?
 grep -E "injected|RVE of IP|cut|stopped" run.log
 fail() { echo "FAIL: $*"; exit 1; }
-for needle in "injected a fault into the RVE of IP 2" "RVE of IP 2 at (" "load step 3" "not converged within max_steps"; do
+for needle in "injected a fault into the RVE of IP $ip" "RVE of IP $ip at (" "load step 3" "not converged within max_steps"; do
   grep -qF "$needle" run.log || fail "log lacks '$needle'"
 done
 rows=$(($(wc -l < out/summary.csv) - 1))

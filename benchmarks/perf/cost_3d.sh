@@ -37,7 +37,7 @@ rve_s = sum(float(r["rve_rank_mean_s"]) for r in rows) * int(np_)
 vals = [datetime.datetime.now().isoformat(timespec="seconds"), commit, host, np_, tag, rves, len(rows),
         f"{wall:.1f}", f"{wall / len(rows):.2f}", solves, f"{rve_s / solves:.4f}", dem,
         f"{1e6 * rve_s / dem:.2f}", its]
-print(f"{tag}: {rves} RVEs, {len(rows)} steps, wall {wall:.1f} s = {wall / len(rows):.2f} s per macro step; "
+print(f"{tag}: {rves} RVEs, {len(rows)} steps, wall {wall:.1f} s = {wall / len(rows):.2f} s per load step; "
       f"{solves} RVE solves, {rve_s / solves * 1e3:.2f} ms each; {dem} DEM steps, "
       f"{1e6 * rve_s / dem:.2f} us each; {its} DR iterations or time steps, {wall / its * 1e3:.1f} ms each")
 open(out, "a").write(",".join(map(str, vals)) + "\n")

@@ -51,9 +51,9 @@ public:
   /**
    * Explicit dynamics of the macro scale: later solves advance the RVE by
    * exactly @p steps DEM steps (the macro time step over the DEM step), the
-   * frame moving at constant velocity to the new F, without servo
-   * corrections or a convergence stop, and return the stresses averaged over
-   * the solve's checks. 0 (default): quasi-static solves.
+   * frame moving to the new F with the servo as a continuous feedback,
+   * without a convergence stop, and return the stresses averaged over the
+   * solve's checks. 0 (default): quasi-static solves.
    * @pre @p steps is 0 or a multiple of the RVE's check interval.
    */
   virtual void set_timed_steps(long steps) = 0;

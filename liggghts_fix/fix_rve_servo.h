@@ -265,7 +265,9 @@ private:
   void apply_servo_correction();
   void fail(Status s, const std::string& reason);
   // --- timed solves (fix_rve_servo_timed.tpp) ------------------------------
-  void begin_timed_solve();
+  void begin_timed_solve(const Tensor& F_before);
+  /// Velocity gradient of the mean motion F_before -> F of a timed solve at its current step.
+  Tensor timed_velocity_gradient() const;
   /// A check of a timed solve: homogenise, filter, finish at its last step.
   void timed_check(long step);
   /// The contact of contacts_ with the largest overlap, for messages.
@@ -440,6 +442,7 @@ private:
   long timed_steps_ = 0;
   int timed_samples_ = 0;
   Tensor timed_P_sum_{}, timed_sigma_sum_{}, timed_sigma_lw_sum_{};
+  Tensor timed_F_from_ = fe2dem::identity<dim>(); ///< F at the start of the timed solve
 };
 } // namespace LAMMPS_NS
 

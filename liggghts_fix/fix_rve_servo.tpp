@@ -455,15 +455,20 @@ void FixRveServo<dim>::post_force(int)
       frame_moment_[q][c] = -torque[i][spin_index<dim>(c)];
   }
 
-  // Cundall local non-viscous damping (R11) on inner particles.
+  // Cundall local non-viscous damping (R11) on inner particles; in timed
+  // solves of the fluctuation velocity (fix_rve_servo_timed.tpp; with
+  // inner_start affine, v holds it already).
   unbalanced_sq_sum_ = 0.0;
+  const bool fluctuation = timed_steps_ > 0 && !affine_inner_;
+  const Tensor L = fluctuation ? timed_velocity_gradient() : Tensor{};
   for (int i = 0; i < atom->nlocal; ++i)
   {
     if (!is_inner(i))
       continue;
     unbalanced_sq_sum_ += fe2dem::dot(first<dim>(f[i]), first<dim>(f[i]));
+    const Vector v_mean = fluctuation ? fe2dem::apply(L, first<dim>(atom->x[i]) - frame_.origin) : Vector{};
     for (int k = 0; k < dim; ++k)
-      f[i][k] -= alpha_ * std::abs(f[i][k]) * sign(v[i][k]);
+      f[i][k] -= alpha_ * std::abs(f[i][k]) * sign(v[i][k] - v_mean[k]);
     for (int c = 0; c < n_spin; ++c)
     {
       const int a = spin_index<dim>(c);

@@ -42,7 +42,7 @@ void FixRveServo<dim>::begin_solve(const Tensor* F)
   solve_pending_ = false;
   schedule_frame_move(F_before);
   if (timed_steps_ > 0)
-    begin_timed_solve();
+    begin_timed_solve(F_before);
   // inner_start affine: the inner particles get the velocity field of the
   // affine motion F_before -> F while the frame moves (see initial_integrate).
   // (The time step may not be known yet: the first solve can begin before init().)

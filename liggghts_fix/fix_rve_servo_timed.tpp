@@ -8,7 +8,11 @@
 // the frame is an affine boundary, and the RVE is much stiffer (measured:
 // twice the quasi-static shear stress). The stresses returned are the mean
 // over the solve's checks (a box filter over the macro step), so that the
-// DEM's high-frequency noise does not reach the macro solution.
+// DEM's high-frequency noise does not reach the macro solution. Cundall
+// damping acts on the fluctuation velocity v - L (x - origin), L the
+// velocity gradient of the mean motion (as YADE's NewtonIntegrator does in
+// periodic cells): damping the absolute velocity of particles that flow
+// with the deformation resists the flow itself.
 #pragma once
 
 #include "fix_rve_servo.h"
@@ -68,9 +72,21 @@ void FixRveServo<dim>::timed_check(long step)
 
 // begin_solve() of a timed solve: the frame move lasts the whole solve.
 template <int dim>
-void FixRveServo<dim>::begin_timed_solve()
+void FixRveServo<dim>::begin_timed_solve(const Tensor& F_before)
 {
+  timed_F_from_ = F_before;
   move_steps_ = static_cast<int>(timed_steps_);
   timed_samples_ = 0;
   timed_P_sum_ = timed_sigma_sum_ = timed_sigma_lw_sum_ = Tensor{};
+}
+
+// L = dF/dt F^-1 along the straight path F_from -> F of the solve.
+template <int dim>
+typename FixRveServo<dim>::Tensor FixRveServo<dim>::timed_velocity_gradient() const
+{
+  using fe2dem::operator+;
+  const double s = static_cast<double>(result_.dem_steps) / timed_steps_;
+  const Tensor dF = F_ + (-1.0) * timed_F_from_;
+  const Tensor F_s = timed_F_from_ + s * dF;
+  return (1.0 / (timed_steps_ * dtv_)) * matmul(dF, fe2dem::inverse(F_s));
 }

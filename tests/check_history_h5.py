@@ -1,7 +1,10 @@
 #!/usr/bin/python3
 """history.h5 describes itself and holds every statistic of the one field list.
 
-1. Every dataset has non-empty string attributes `unit` and `description`.
+1. Every dataset has non-empty string attributes `unit` and `description`;
+   the root group describes the run: created_by (fe2dem, version, git
+   commit), created, parameter_file and parameters (that file's text, byte
+   for byte), dimension, tensor_layout, sign_convention, stress_unit.
 2. Every statistic named in coupler/rve_statistics.h (read from the header,
    not from the writer) is a dataset of [n_steps][n_ip](...) rows.
 3. mean_overlap (the statistic added through that list alone) equals the
@@ -64,6 +67,16 @@ def main(h5_file, header, particles):
         for name, d in f.items():
             unit, desc = text(d.attrs.get("unit", "")), text(d.attrs.get("description", ""))
             check(f"{name} has unit and description", unit != "" and desc != "", f"[{unit}] {desc}")
+        root = {k: text(v) for k, v in f.attrs.items()}
+        for key in ("created_by", "created", "parameter_file", "parameters", "dimension",
+                    "tensor_layout", "sign_convention", "stress_unit"):
+            check(f"root attribute {key}", root.get(key, "") != "", root.get(key, "missing")[:70])
+        check("created_by names fe2dem, its version and commit",
+              re.match(r"^fe2dem \d+\.\d+\.\d+ \(git \S+\)$", root.get("created_by", "")) is not None,
+              root.get("created_by", ""))
+        prm = root.get("parameter_file", "")
+        check("parameters is the parameter file's text", os.path.isfile(prm) and
+              open(prm).read() == root.get("parameters"), prm)
         for name in names:
             ok = name in f and f[name].shape[:2] == (n_steps, n_ip)
             check(f"statistic {name} in history.h5 as [steps][IPs]", ok,

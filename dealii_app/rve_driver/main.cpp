@@ -1,4 +1,5 @@
 // fe2dem-rve FILE.prm: one RVE along a macro path; writes OUTPUT/rve.csv.
+#include "fe2dem_version.h"
 #include "path_parameters.h"
 #include "rve_path_runner.h"
 
@@ -17,6 +18,7 @@ void print_usage()
   std::cout << "Usage: fe2dem-rve FILE.prm [--output-directory DIR]\n"
                "                                  drive one RVE along the path in FILE.prm\n"
                "       fe2dem-rve --print-parameters   every parameter, default and doc\n"
+               "       fe2dem-rve --version            version and git commit\n"
                "       fe2dem-rve --help\n"
                "Writes <Output directory>/rve.csv. Examples: rve_templates/examples/*.prm\n";
 }
@@ -41,6 +43,8 @@ int main(int argc, char** argv)
     }
     else if (std::strcmp(argv[1], "--print-parameters") == 0)
       prm.print_parameters(std::cout, dealii::ParameterHandler::Text);
+    else if (std::strcmp(argv[1], "--version") == 0)
+      std::cout << "fe2dem-rve " FE2DEM_VERSION " (git " FE2DEM_GIT_COMMIT ")\n";
     else if (n_ranks != 1)
     {
       std::cerr << "fe2dem-rve drives one RVE on one process; run it without mpirun -np "

@@ -154,9 +154,13 @@ void ExplicitSolver<dim>::open_output_files(const std::string& checkpoint)
       for (unsigned int d = 0; d < dim; ++d)
         positions.push_back(p.position[d]);
     history_file_ = std::make_unique<HistoryWriter>(history, positions, dim);
+    history_file_->describe_run(prm_.file, dim);
   }
   else
+  {
     history_file_ = restore_history(checkpoint, history);
+    history_file_->note_resume();
+  }
 }
 
 template <int dim>

@@ -1,8 +1,13 @@
 #include "history_writer.h"
+#include "fe2dem_version.h"
 
 #include <hdf5.h>
 
 #include <algorithm>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <type_traits>
 
@@ -10,9 +15,11 @@ namespace fe2dem::macro
 {
 namespace
 {
-/// Writes string attribute @p name = @p value on object @p object.
+/// Writes string attribute @p name = @p value on object @p object (replacing one of that name).
 void write_string_attribute(hid_t object, const char* name, const std::string& value)
 {
+  if (H5Aexists(object, name) > 0)
+    H5Adelete(object, name);
   hid_t type = H5Tcopy(H5T_C_S1);
   H5Tset_size(type, value.size() > 0 ? value.size() : 1);
   hid_t space = H5Screate(H5S_SCALAR);
@@ -21,6 +28,41 @@ void write_string_attribute(hid_t object, const char* name, const std::string& v
   H5Aclose(attr);
   H5Sclose(space);
   H5Tclose(type);
+}
+
+/// H5Aiterate2 callback: copies attribute @p name of @p from to the object *@p to.
+herr_t copy_attribute(hid_t from, const char* name, const H5A_info_t*, void* to)
+{
+  hid_t a = H5Aopen(from, name, H5P_DEFAULT);
+  hid_t type = H5Aget_type(a), space = H5Aget_space(a);
+  const hssize_t n = std::max<hssize_t>(1, H5Sget_simple_extent_npoints(space));
+  std::vector<char> bytes(H5Tget_size(type) * static_cast<std::size_t>(n));
+  H5Aread(a, type, bytes.data());
+  const hid_t target = *static_cast<hid_t*>(to);
+  if (H5Aexists(target, name) > 0)
+    H5Adelete(target, name);
+  hid_t b = H5Acreate2(target, name, type, space, H5P_DEFAULT, H5P_DEFAULT);
+  H5Awrite(b, type, bytes.data());
+  H5Aclose(b);
+  H5Sclose(space);
+  H5Tclose(type);
+  H5Aclose(a);
+  return 0;
+}
+
+/// Every attribute of object @p from onto object @p to.
+void copy_attributes(hid_t from, hid_t to)
+{
+  hsize_t index = 0;
+  H5Aiterate2(from, H5_INDEX_NAME, H5_ITER_INC, &index, copy_attribute, &to);
+}
+
+std::string program_and_date()
+{
+  char date[32];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  return std::string("fe2dem " FE2DEM_VERSION " (git " FE2DEM_GIT_COMMIT ") at ") + date;
 }
 
 /// Creates an extendible dataset [0][n_ip][width] (width 0: [0][n_ip]; n_ip 0: [0]).
@@ -121,13 +163,43 @@ HistoryWriter::HistoryWriter(const std::string& file, long long source) : name_(
   for (const std::string& name : dataset_names(source))
     if (H5Ocopy(source, name.c_str(), file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT) < 0)
       throw std::runtime_error("cannot copy '" + name + "' into '" + file + "'");
+  copy_attributes(source, file_);
   n_ip_ = rows(file_, "ip_position");
   n_steps_ = rows(file_, "step");
   H5Fflush(file_, H5F_SCOPE_GLOBAL);
 }
 
+void HistoryWriter::describe_run(const std::string& parameter_file, unsigned int dim)
+{
+  std::ifstream in(parameter_file);
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string stamp = program_and_date();
+  write_string_attribute(file_, "created_by", stamp.substr(0, stamp.find(" at ")));
+  write_string_attribute(file_, "created", stamp.substr(stamp.find(" at ") + 4));
+  write_string_attribute(file_, "parameter_file", std::filesystem::absolute(parameter_file).string());
+  write_string_attribute(file_, "parameters", text.str());
+  write_string_attribute(file_, "dimension", std::to_string(dim));
+  write_string_attribute(file_, "tensor_layout",
+                         dim == 2 ? "datasets F, P, sigma, ...: [step][ip][component], components "
+                                    "row-major 11 12 21 22"
+                                  : "datasets F, P, sigma, ...: [step][ip][component], components "
+                                    "row-major 11 12 13 21 22 23 31 32 33");
+  write_string_attribute(file_, "sign_convention",
+                         "tension positive; F = dx/dX; P first Piola-Kirchhoff stress; sigma = P F^T / det F");
+  write_string_attribute(file_, "stress_unit", dim == 2 ? "N/m (2D: force per unit length)" : "Pa");
+  H5Fflush(file_, H5F_SCOPE_GLOBAL);
+}
+
+void HistoryWriter::note_resume()
+{
+  write_string_attribute(file_, "resumed_by", program_and_date());
+  H5Fflush(file_, H5F_SCOPE_GLOBAL);
+}
+
 void HistoryWriter::copy_to(long long destination) const
 {
+  copy_attributes(file_, destination);
   for (const std::string& name : dataset_names(file_))
     if (H5Ocopy(file_, name.c_str(), destination, name.c_str(), H5P_DEFAULT, H5P_DEFAULT) < 0)
       throw std::runtime_error("cannot copy '" + name + "' of '" + name_ + "' into a checkpoint");

@@ -11,7 +11,10 @@
  * stress P F^T / J; stresses in N/m in 2D, Pa in 3D),
  * then one dataset per statistic under its name: tensors
  * [s][n_ip][dim*dim], scalars [s][n_ip] (double), counts [s][n_ip] (long).
- * Every dataset has the string attributes `unit` and `description`.
+ * Every dataset has the string attributes `unit` and `description`; the
+ * root group has string attributes describing the run (describe_run():
+ * program, version and commit, date, parameter file and its text, tensor
+ * layout, sign convention, stress unit), kept through checkpoints.
  */
 #pragma once
 
@@ -51,8 +54,16 @@ public:
   /// Appends one converged load step; flushed to disk before returning.
   template <int dim>
   void append(int step, double axial_strain, const std::vector<IpRecord<dim>>& ips);
-  /// Copies every dataset, as written so far, into HDF5 group @p destination.
+  /// Copies every dataset and the root attributes, as written so far, into HDF5 group @p destination.
   void copy_to(long long destination) const;
+  /**
+   * Root attributes of a new file: `created_by` (program, version, git
+   * commit), `created` (UTC, ISO 8601), `parameter_file` and `parameters`
+   * (its text), `dimension`, `tensor_layout`, `sign_convention`, `stress_unit`.
+   */
+  void describe_run(const std::string& parameter_file, unsigned int dim);
+  /// Root attribute `resumed_by`: program, version, commit and date of the last --resume.
+  void note_resume();
 
 private:
   /// Creates extendible dataset @p name unless it exists (the first append creates them).

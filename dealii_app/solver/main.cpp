@@ -1,5 +1,6 @@
 // fe2dem FILE.prm: the macro problem of a parameter file.
 #include "explicit_solver.h"
+#include "fe2dem_version.h"
 #include "macro_parameters.h"
 #include "rve_pool.h" // CouplerError
 
@@ -38,6 +39,7 @@ int main(int argc, char** argv)
       std::cout << "Usage: fe2dem FILE.prm            run the macro problem of FILE.prm\n"
                    "       fe2dem FILE.prm --resume   continue from the newest checkpoint\n"
                    "       fe2dem --print-parameters  every parameter, default and doc\n"
+                   "       fe2dem --version           version and git commit\n"
                    "Runs under mpirun -np N; results do not depend on N. Outputs in the\n"
                    "'Output directory': summary.csv, history.h5, solution-NNNN.vtu, solution.pvd,\n"
                    "checkpoints/ and particles/ (subsection Particle dumps). SIGTERM or SIGUSR1\n"
@@ -46,6 +48,8 @@ int main(int argc, char** argv)
     }
     else if (std::strcmp(argv[1], "--print-parameters") == 0)
       prm.print_parameters(std::cout, dealii::ParameterHandler::Text);
+    else if (std::strcmp(argv[1], "--version") == 0)
+      std::cout << "fe2dem " FE2DEM_VERSION " (git " FE2DEM_GIT_COMMIT ")\n";
     else
     {
       Parameters parameters;

@@ -11,6 +11,7 @@ packages=(
   libeigen3-dev                     # tensors in the coupler
   libhdf5-openmpi-dev               # the HDF5 build deal.II links (see architecture.md)
   python3 python3-numpy python3-matplotlib python3-h5py   # plots, post-processing
+  python3-vtk9                      # tests read the VTU outputs as ParaView does (VTK 9.1)
 )
 
 missing=()

@@ -1,6 +1,7 @@
 // Output of a converged load step: summary.csv, history.h5, VTU and
 // particle dumps (architecture.md contracts).
 #include "explicit_solver.h"
+#include "ip_points_writer.h"
 
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/numerics/data_out.h>
@@ -30,6 +31,11 @@ void ExplicitSolver<dim>::output_step(unsigned int iterations)
   history_file_->append(static_cast<int>(step_), axial, stats.records);
   write_summary_row(stats, iterations, axial, rve_seconds);
   write_vtu(stats);
+  std::vector<double> positions;
+  for (const IpState<dim>& p : ip_)
+    for (unsigned int d = 0; d < dim; ++d)
+      positions.push_back(p.position[d]);
+  write_ip_points<dim>(prm_.output_directory, static_cast<int>(step_), positions, stats.records);
 }
 
 // 2D: |s11 - s22| / |s11 + s22| ([LBS]). 3D: (s_max - s_min) / |s_max + s_min| of

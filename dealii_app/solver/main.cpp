@@ -42,6 +42,7 @@ int main(int argc, char** argv)
                    "       fe2dem --version           version and git commit\n"
                    "Runs under mpirun -np N; results do not depend on N. Outputs in the\n"
                    "'Output directory': summary.csv, history.h5, solution-NNNN.vtu, solution.pvd,\n"
+                   "ip-NNNN.vtu and ip.pvd (per-IP results for ParaView),\n"
                    "checkpoints/ and particles/ (subsection Particle dumps). SIGTERM or SIGUSR1\n"
                    "writes a checkpoint of the last converged load step and stops (exit 0).\n";
       status = argc == 2 ? 0 : 2;

@@ -39,11 +39,21 @@ int find_line(const std::string& file, const std::string& command)
   return 0;
 }
 
+// fe2dem-liggghts: $FE2DEM_LIGGGHTS, else the one beside the running program
+// (installed programs), else the build tree's, else the installed one (a
+// program of the user's linking the installed coupler).
 std::string executable()
 {
+  namespace fs = std::filesystem;
   if (const char* env = std::getenv("FE2DEM_LIGGGHTS"))
     return env;
-  return FE2DEM_LIGGGHTS_EXE;
+  std::error_code ec;
+  const fs::path beside = fs::read_symlink("/proc/self/exe", ec).parent_path() / "fe2dem-liggghts";
+  if (!ec && fs::is_regular_file(beside))
+    return beside.string();
+  if (fs::is_regular_file(FE2DEM_LIGGGHTS_EXE))
+    return FE2DEM_LIGGGHTS_EXE;
+  return FE2DEM_INSTALLED_LIGGGHTS_EXE;
 }
 } // namespace
 

@@ -5,22 +5,52 @@
 #include "template_check.h"
 
 #include <mpi.h>
+#include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
+#include <regex>
 
 namespace fe2dem
 {
 namespace
 {
+/**
+ * Removes the RVE images in @p dir of this user's processes that no longer
+ * exist: a run ended by SIGKILL or an abort cannot remove its own, and they
+ * hold RAM on a shared node until someone does.
+ */
+void remove_images_of_dead_processes(const std::string& dir)
+{
+  static const std::regex name("fe2dem-([0-9]+)-[0-9]+-[a-z]+\\.restart");
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+  {
+    std::smatch m;
+    const std::string file = entry.path().filename().string();
+    struct stat info;
+    if (!std::regex_match(file, m, name) || ::stat(entry.path().c_str(), &info) != 0 ||
+        info.st_uid != ::getuid())
+      continue;
+    const pid_t pid = static_cast<pid_t>(std::stol(m[1]));
+    if (pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH)
+      std::filesystem::remove(entry.path(), ec);
+  }
+}
+
 /// A process-unique file name in /dev/shm (memory) for restart images.
 std::string state_file(const char* kind)
 {
   static std::atomic<long> counter{0};
+  static std::once_flag cleaned;
   const std::string dir = std::filesystem::is_directory("/dev/shm") ? "/dev/shm" : "/tmp";
+  std::call_once(cleaned, remove_images_of_dead_processes, dir);
   return dir + "/fe2dem-" + std::to_string(getpid()) + "-" + std::to_string(counter++) + "-" +
          kind + ".restart";
 }

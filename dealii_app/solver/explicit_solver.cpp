@@ -62,19 +62,34 @@ void ExplicitSolver<dim>::prepare_output_directory()
   std::string problem;
   if (rank_ == 0)
   {
+    const std::string unwritable = "cannot write to 'Output directory' = '" + prm_.output_directory +
+                                   "': choose a writable directory";
     std::error_code ec;
     std::filesystem::create_directories(prm_.output_directory + "/checkpoints", ec);
-    if (!ec && !prm_.particle_dumps.points.empty())
-      std::filesystem::create_directories(prm_.output_directory + "/particles", ec);
-    // A new run must not leave an older run's checkpoints for a later --resume.
-    if (!ec && !resume_)
-      for (const std::string& old : list_checkpoints(checkpoint_directory_))
-        std::filesystem::remove(old, ec);
-    const std::string probe = prm_.output_directory + "/.fe2dem-write-test";
-    if (ec || !std::ofstream(probe))
-      problem = "cannot write to 'Output directory' = '" + prm_.output_directory +
-                "': choose a writable directory";
-    std::filesystem::remove(probe, ec);
+    if (ec)
+      problem = unwritable;
+    else // one writer per directory, before anything in it is removed or truncated
+      try
+      {
+        output_lock_ = std::make_unique<OutputLock>(prm_.output_directory);
+      }
+      catch (const std::runtime_error& e)
+      {
+        problem = e.what();
+      }
+    if (problem.empty())
+    {
+      if (!prm_.particle_dumps.points.empty())
+        std::filesystem::create_directories(prm_.output_directory + "/particles", ec);
+      // A new run must not leave an older run's checkpoints for a later --resume.
+      if (!ec && !resume_)
+        for (const std::string& old : list_checkpoints(checkpoint_directory_))
+          std::filesystem::remove(old, ec);
+      const std::string probe = prm_.output_directory + "/.fe2dem-write-test";
+      if (ec || !std::ofstream(probe))
+        problem = unwritable;
+      std::filesystem::remove(probe, ec);
+    }
   }
   problem = Utilities::MPI::broadcast(MPI_COMM_WORLD, problem, 0);
   if (!problem.empty())

@@ -24,6 +24,7 @@
 #include "macro_parameters.h"
 #include "material.h"
 #include "one_point_elements.h"
+#include "output_lock.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
@@ -52,8 +53,9 @@ public:
 
   /**
    * Makes SIGTERM and SIGUSR1 (sent by batch systems before the wall-time
-   * limit) end the run after writing a checkpoint of the last converged load
-   * step, with exit code 0. Call once, before run().
+   * limit) and SIGINT (Ctrl-C; a second one kills) end the run after writing
+   * a checkpoint of the last converged load step, with exit code 0. Call
+   * once, before run().
    */
   static void install_signal_handlers();
 
@@ -189,6 +191,7 @@ private:
   long dem_steps_per_macro_step_ = 0;
   double macro_time_step_ = 0.0;
   std::unique_ptr<HistoryWriter> history_file_;
+  std::unique_ptr<OutputLock> output_lock_; ///< rank 0: this run owns the output directory
   std::map<dealii::types::global_dof_index, double> boundary_values_;
   dealii::Vector<double> mass_, displacement_, velocity_, f_int_, f_ext_;
   dealii::Vector<double> f_hourglass_; ///< the hourglass part of f_int_ (one point)

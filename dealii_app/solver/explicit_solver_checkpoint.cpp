@@ -75,6 +75,9 @@ void ExplicitSolver<dim>::install_signal_handlers()
   action.sa_flags = SA_RESTART;
   sigaction(SIGTERM, &action, nullptr);
   sigaction(SIGUSR1, &action, nullptr);
+  // Ctrl-C stops like SIGTERM; a second Ctrl-C kills at once (handler reset).
+  action.sa_flags |= SA_RESETHAND;
+  sigaction(SIGINT, &action, nullptr);
 }
 
 template <int dim>

@@ -80,7 +80,8 @@ void ExplicitSolver<dim>::run()
   catch (const StopSignal& s)
   {
     const std::string file = write_checkpoint();
-    pcout_ << "\nfe2dem: received " << (s.signal == SIGTERM ? "SIGTERM" : "SIGUSR1")
+    pcout_ << "\nfe2dem: received "
+           << (s.signal == SIGTERM ? "SIGTERM" : s.signal == SIGINT ? "SIGINT" : "SIGUSR1")
            << " during load step " << step_ << ": wrote " << file << " (load step "
            << converged_.step << ") and stopped.\nContinue with: fe2dem " << prm_.file
            << " --resume" << std::endl;

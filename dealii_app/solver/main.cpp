@@ -43,7 +43,7 @@ int main(int argc, char** argv)
                    "Runs under mpirun -np N; results do not depend on N. Outputs in the\n"
                    "'Output directory': summary.csv, history.h5, solution-NNNN.vtu, solution.pvd,\n"
                    "ip-NNNN.vtu and ip.pvd (per-IP results for ParaView),\n"
-                   "checkpoints/ and particles/ (subsection Particle dumps). SIGTERM or SIGUSR1\n"
+                   "checkpoints/ and particles/ (subsection Particle dumps). SIGTERM, SIGUSR1 or Ctrl-C\n"
                    "writes a checkpoint of the last converged load step and stops (exit 0).\n";
       status = argc == 2 ? 0 : 2;
     }

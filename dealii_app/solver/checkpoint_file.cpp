@@ -1,5 +1,6 @@
 #include "checkpoint_file.h"
 
+#include "file_hash.h"
 #include "history_writer.h"
 
 #include <hdf5.h>
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <regex>
 #include <sstream>
@@ -151,7 +153,25 @@ void write_checkpoint(const std::string& file, const CheckpointData& d,
     throw;
   }
   check(H5Fclose(h), "closing", tmp);
+  // The fingerprint first: a checkpoint with the final name has one.
+  std::ofstream(file + ".fnv") << file_hash(tmp) << " " << std::filesystem::file_size(tmp) << "\n";
   std::filesystem::rename(tmp, file); // atomic: a checkpoint with the final name is complete
+}
+
+std::string damage_of(const std::string& file)
+{
+  std::ifstream in(file + ".fnv");
+  std::string expected;
+  std::uintmax_t size = 0;
+  if (!(in >> expected >> size))
+    return "no fingerprint '" + file + ".fnv' (written by an fe2dem before 0.9, or removed)";
+  std::error_code ec;
+  const std::uintmax_t actual = std::filesystem::file_size(file, ec);
+  if (ec || actual != size)
+    return std::to_string(ec ? 0 : actual) + " bytes, " + std::to_string(size) + " written (truncated?)";
+  if (file_hash(file) != expected)
+    return "its bytes do not match the fingerprint written with it (altered on disk)";
+  return "";
 }
 
 CheckpointData read_checkpoint(const std::string& file)
@@ -256,7 +276,11 @@ std::vector<std::string> list_checkpoints(const std::string& directory)
 void prune_checkpoints(const std::string& directory, unsigned int keep)
 {
   const std::vector<std::string> files = list_checkpoints(directory);
+  std::error_code ec;
   for (std::size_t i = 0; i + keep < files.size(); ++i)
+  {
     std::filesystem::remove(files[i]);
+    std::filesystem::remove(files[i] + ".fnv", ec);
+  }
 }
 } // namespace fe2dem::macro

@@ -50,6 +50,14 @@ void write_checkpoint(const std::string& file, const CheckpointData& data,
 /// Reads the macro side. @throws std::runtime_error naming the file.
 CheckpointData read_checkpoint(const std::string& file);
 
+/**
+ * Why checkpoint @p file cannot be trusted, or "" if it can: its bytes must
+ * match the fingerprint write_checkpoint() put beside it (FILE.fnv, written
+ * before the checkpoint got its final name), so that a truncated or altered
+ * file is detected before anything is read from it.
+ */
+std::string damage_of(const std::string& file);
+
 /// history.h5 recreated at @p history_file from the copy in checkpoint @p file, to append to.
 std::unique_ptr<HistoryWriter> restore_history(const std::string& file, const std::string& history_file);
 
@@ -62,6 +70,6 @@ std::string checkpoint_path(const std::string& directory, int step);
 /// Complete checkpoints in @p directory, oldest first (temporary files ignored).
 std::vector<std::string> list_checkpoints(const std::string& directory);
 
-/// Deletes all but the newest @p keep complete checkpoints in @p directory.
+/// Deletes all but the newest @p keep complete checkpoints (and their fingerprints) in @p directory.
 void prune_checkpoints(const std::string& directory, unsigned int keep);
 } // namespace fe2dem::macro

@@ -150,8 +150,30 @@ std::string ExplicitSolver<dim>::resume_from_checkpoint()
                              "' (a run writes one every 'Every' load steps of subsection "
                              "Checkpoint, on SIGTERM/SIGUSR1 and when an RVE fault stops it); "
                              "start the run without --resume");
-  const std::string& file = files.back();
-  const CheckpointData d = read_checkpoint(file);
+  // The newest intact one: a damaged newest checkpoint falls back to the one before.
+  std::string file, damage;
+  CheckpointData d;
+  for (auto f = files.rbegin(); f != files.rend() && file.empty(); ++f)
+  {
+    std::string why = damage_of(*f);
+    if (why.empty())
+      try
+      {
+        d = read_checkpoint(*f);
+        file = *f;
+        continue;
+      }
+      catch (const std::exception& e)
+      {
+        why = e.what();
+      }
+    damage += "\n  " + *f + ": " + why;
+    pcout_ << "--resume: checkpoint '" << *f << "' is damaged (" << why << ")"
+           << (std::next(f) != files.rend() ? "; trying the one before" : "") << std::endl;
+  }
+  if (file.empty())
+    throw std::runtime_error("--resume: no intact checkpoint in '" + checkpoint_directory_ + "':" + damage +
+                             "\nStart the run again without --resume");
   if (d.parameters != prm_.identity)
     throw std::runtime_error("--resume: checkpoint '" + file + "' was written with other parameters than '" +
                              prm_.file + "':" + differences(d.parameters, prm_.identity) +

@@ -1,4 +1,5 @@
 #include "macro_parameters.h"
+#include "file_hash.h"
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/utilities.h>
@@ -550,6 +551,12 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
   this->file = file;
   rve.parse_parameters(prm, base.string());
   if (material.type == MaterialParameters::Type::rve)
+  {
     rve.check_files(file);
+    // The files the RVEs are built from belong to the run too (--resume compares them).
+    identity += "RVE/Template file content (FNV-1a 64) = " + file_hash(rve.template_file) + "\n" +
+                "RVE/Packing .rve.data content (FNV-1a 64) = " + file_hash(rve.packing + ".rve.data") + "\n" +
+                "RVE/Packing .vars content (FNV-1a 64) = " + file_hash(rve.packing + ".vars") + "\n";
+  }
 }
 } // namespace fe2dem::macro

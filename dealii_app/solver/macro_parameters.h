@@ -201,7 +201,8 @@ struct Parameters
   Faults faults;
   /// Every entry that defines the results (checked on --resume), as
   /// 'subsection/entry = value' lines: all but Output directory and the
-  /// subsections Checkpoint, Faults, Parallel and Particle dumps.
+  /// subsections Checkpoint, Faults, Parallel and Particle dumps; with RVEs
+  /// also fingerprints of the template and packing files.
   std::string identity;
   std::string file; ///< the parameter file
   RveParameters rve; ///< subsection RVE (Material type = RVE)

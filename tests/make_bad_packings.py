@@ -5,7 +5,9 @@ Usage: make_bad_packings.py SOURCE_PREFIX OUT_DIR
 Writes OUT_DIR/{no_frame,unpaired,overlap}.{rve.data,vars}:
   no_frame  every particle inner (type 1): the frame group is empty;
   unpaired  one bottom-edge frame particle removed: its top image has no pair;
-  overlap   an inner particle moved onto another one.
+  overlap   an inner particle moved onto another one;
+and, for LIGGGHTS' own messages (issue 16), negative_radius, zero_density,
+text_type (a word in the type column) and no_ly (a vars file without rve_Ly).
 """
 import sys
 
@@ -39,5 +41,12 @@ target = next(r for r in moved if r[0] == inner[1][0])
 target[4] = f"{float(inner[0][4]) + 1e-6:.16e}"
 target[5] = inner[0][5]
 write("overlap", moved)
-print(f"wrote {out}/{{no_frame,unpaired,overlap}} from {src} (removed frame particle {victim[0]}, "
+first = [list(r) for r in atoms]
+write("negative_radius", [first[0][:2] + ["-" + first[0][2]] + first[0][3:]] + atoms[1:])
+write("zero_density", [first[0][:3] + ["0"] + first[0][4:]] + atoms[1:])
+write("text_type", [[first[0][0], "x"] + first[0][2:]] + atoms[1:])
+write("no_ly", atoms)
+with open(f"{out}/no_ly.vars", "w") as f:
+    f.write("\n".join(l for l in data.vars_text.splitlines() if "rve_Ly" not in l) + "\n")
+print(f"wrote {out}/{{no_frame,unpaired,overlap,negative_radius,zero_density,text_type,no_ly}} from {src} (removed frame particle {victim[0]}, "
       f"moved particle {inner[1][0]} onto {inner[0][0]})")

@@ -13,12 +13,17 @@ fail() { echo "FAIL: $*"; exit 1; }
 "$exe" case.prm > first.log 2>&1 & first=$!
 for _ in $(seq 1200); do [[ -f out/summary.csv && $(wc -l < out/summary.csv) -ge 2 ]] && break; sleep 0.05; done
 kill -0 $first 2> /dev/null || fail "the first run ended before the second one started"
+# Paused while the others try (however slow the machine), then resumed: it
+# must still end as if undisturbed.
+kill -STOP $first
+trap 'kill -CONT $first 2> /dev/null' EXIT # never leave it paused
 for args in "case.prm" "case.prm --resume"; do
   out=$("$exe" $args 2>&1); rc=$?
   [[ $rc -ne 0 ]] || fail "'fe2dem $args' beside a running fe2dem exited 0"
   grep -qF "is in use by another fe2dem run (process $first" <<<"$out" || fail "'fe2dem $args': message lacks the holder: $(tail -n 2 <<<"$out")"
   echo "refused: fe2dem $args: $(grep -F 'in use' <<<"$out" | head -n 1 | cut -c1-160)"
 done
+kill -CONT $first
 wait $first || fail "the first run failed: $(tail -n 3 first.log)"
 python3 "$tests/compare_summaries.py" "$reference/summary.csv" out/summary.csv || fail "summary.csv differs from an undisturbed run"
 /usr/bin/python3 "$tests/compare_histories.py" "$reference/history.h5" out/history.h5 || fail "history.h5 differs"

@@ -85,6 +85,11 @@ void FixRveServo<dim>::post_create()
     error->fix_error(FLERR, this, "the fix's dimension differs from the script's 'dimension'");
   if (comm->nprocs != 1)
     error->fix_error(FLERR, this, "one RVE runs on one process; run LIGGGHTS on MPI_COMM_SELF");
+  for (int k = 0; k < modify->nfix; ++k) // (LIGGGHTS would only say: one compute pair/local)
+    if (modify->fix[k] != this && std::strcmp(modify->fix[k]->style, "rve/servo") == 0)
+      error->fix_error(FLERR, this, ("a second fix rve/servo beside fix '" + std::string(modify->fix[k]->id) +
+                                     "': one RVE per LIGGGHTS instance; remove one of them")
+                                      .c_str());
   if (!atom->sphere_flag)
     error->fix_error(FLERR, this, "requires 'atom_style sphere'");
   if (atom->map_style == 0)

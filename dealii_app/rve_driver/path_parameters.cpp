@@ -1,6 +1,9 @@
 #include "path_parameters.h"
 
+#include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace fe2dem::rve_driver
@@ -93,6 +96,46 @@ void Parameters::declare_parameters(dealii::ParameterHandler& prm)
   PathParameters::declare_parameters(prm);
 }
 
+namespace
+{
+/// Determinant of a row-major @p dim x @p dim matrix (2 or 3).
+double determinant(const std::vector<double>& F, unsigned int dim)
+{
+  if (dim == 2)
+    return F[0] * F[3] - F[1] * F[2];
+  return F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
+         F[2] * (F[3] * F[7] - F[4] * F[6]);
+}
+
+/// Every row of the table @p file ('#' comments, blank lines skipped), checked before any RVE exists.
+std::vector<std::vector<double>> read_table(const std::string& file, unsigned int dim)
+{
+  std::ifstream in(file);
+  std::vector<std::vector<double>> rows;
+  std::string line;
+  for (unsigned int line_no = 1; std::getline(in, line); ++line_no)
+  {
+    line = line.substr(0, line.find('#'));
+    if (line.find_first_not_of(" \t\r") == std::string::npos)
+      continue;
+    std::istringstream s(line);
+    std::vector<double> F(dim * dim);
+    bool read = true;
+    for (double& f : F)
+      read = read && (s >> f) && std::isfinite(f);
+    std::string extra;
+    if (!read || (s >> extra) || !(determinant(F, dim) > 0.0))
+      throw std::runtime_error(file + ":" + std::to_string(line_no) + ": '" + line +
+                               (dim == 2 ? "' is not four numbers F11 F12 F21 F22 with det F > 0"
+                                         : "' is not nine numbers F11 F12 F13 F21 ... F33 with det F > 0"));
+    rows.push_back(F);
+  }
+  if (rows.empty())
+    throw std::runtime_error(file + ": no row of F (subsection Path: 'Table file')");
+  return rows;
+}
+} // namespace
+
 void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
 {
   const std::string base = std::filesystem::path(file).parent_path().string();
@@ -102,6 +145,9 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
   path.parse_parameters(prm, base);
   rve.check_files(file);
   if (path.type == "table")
+  {
     require_file(path.table_file, "subsection Path: Table file", file);
+    path.table = read_table(path.table_file, path.dimension);
+  }
 }
 } // namespace fe2dem::rve_driver

@@ -10,6 +10,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
+#include <vector>
 
 namespace fe2dem::rve_driver
 {
@@ -22,6 +23,8 @@ struct PathParameters
   unsigned int isotropic_steps, loading_steps;
   double axial_strain, shear_strain;
   std::string table_file;
+  /// table: the rows of 'Table file' (dimension^2 values each), read and checked whole by parse.
+  std::vector<std::vector<double>> table;
   double stress_tolerance;
   bool free_shear;           ///< also hold sigma12 = 0 through F12 (as the macro biaxial test)
   bool axial_y = false;      ///< triaxial (3D): compress along y instead of z (fe2dem's vertical axis)

@@ -319,28 +319,14 @@ void RvePathRunner<dim>::run_shear_stage()
   }
 }
 
+// The rows were read and checked whole by Parameters::parse, before the RVE existed.
 template <int dim>
 void RvePathRunner<dim>::run_table()
 {
-  std::ifstream in(prm_.path.table_file);
-  std::string line;
-  unsigned int line_no = 0;
-  while (std::getline(in, line))
+  for (const std::vector<double>& row : prm_.path.table)
   {
-    ++line_no;
-    line = line.substr(0, line.find('#'));
-    if (line.find_first_not_of(" \t\r") == std::string::npos)
-      continue;
-    std::istringstream s(line);
     Matrix F;
-    bool read = true;
-    for (double& f : F)
-      read = read && (s >> f) && std::isfinite(f);
-    std::string extra;
-    if (!read || (s >> extra) || !(det(F) > 0.0))
-      throw std::runtime_error(prm_.path.table_file + ":" + std::to_string(line_no) + ": '" + line +
-                               (dim == 2 ? "' is not four numbers F11 F12 F21 F22 with det F > 0"
-                                         : "' is not nine numbers F11 F12 F13 F21 ... F33 with det F > 0"));
+    std::copy(row.begin(), row.end(), F.begin());
     solve(F);
     write_row(rve_.result(), 0);
   }

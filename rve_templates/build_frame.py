@@ -150,9 +150,12 @@ def _int(word, path, lineno):
 
 def _float(word, path, lineno):
     try:
-        return float(word)
+        value = float(word)
     except ValueError:
         fail(f"{path}:{lineno}: expected a number, found '{word}'.")
+    if not math.isfinite(value):
+        fail(f"{path}:{lineno}: '{word}' is not a finite number: fix or regenerate the packing.")
+    return value
 
 
 def areal_density(atoms, path, override):

@@ -7,7 +7,8 @@ Writes OUT_DIR/{no_frame,unpaired,overlap}.{rve.data,vars}:
   unpaired  one bottom-edge frame particle removed: its top image has no pair;
   overlap   an inner particle moved onto another one;
 and, for LIGGGHTS' own messages (issue 16), negative_radius, zero_density,
-text_type (a word in the type column) and no_ly (a vars file without rve_Ly).
+text_type (a word in the type column) and no_ly (a vars file without rve_Ly);
+and 'with space/spaced', a valid copy in a directory whose name has a space.
 """
 import sys
 
@@ -41,6 +42,7 @@ target = next(r for r in moved if r[0] == inner[1][0])
 target[4] = f"{float(inner[0][4]) + 1e-6:.16e}"
 target[5] = inner[0][5]
 write("overlap", moved)
+data.write(out + "/with space", "spaced", atoms)
 first = [list(r) for r in atoms]
 write("negative_radius", [first[0][:2] + ["-" + first[0][2]] + first[0][3:]] + atoms[1:])
 write("zero_density", [first[0][:3] + ["0"] + first[0][4:]] + atoms[1:])

@@ -176,6 +176,12 @@ void RveParameters::check_files(const std::string& prm_file) const
   require_file(template_file, "subsection RVE: Template", prm_file);
   require_file(packing + ".rve.data", "subsection RVE: Packing (.rve.data)", prm_file);
   require_file(packing + ".vars", "subsection RVE: Packing (.vars)", prm_file);
+  // LIGGGHTS splits commands at white space, also inside a substituted variable.
+  for (const auto& [entry, path] : {std::pair{"Template", template_file}, std::pair{"Packing", packing}})
+    if (path.find_first_of(" \t") != std::string::npos)
+      throw std::runtime_error(prm_file + ": subsection RVE: '" + entry + "' = '" + path +
+                               "' has a space, and LIGGGHTS splits its commands (read_data, include) "
+                               "at spaces; use a path without spaces (e.g. a symbolic link)");
 }
 
 RveSetup RveParameters::setup(const std::string& log_file) const

@@ -9,6 +9,8 @@
 #include <mpi.h>
 
 #include <array>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
@@ -26,16 +28,27 @@ void ExplicitSolver<dim>::output_step(unsigned int iterations)
   // Load balance: RVE seconds of the busiest and of the mean rank (collective).
   const Utilities::MPI::MinMaxAvg rve_seconds =
     Utilities::MPI::min_max_avg(cost_in_step_.seconds, MPI_COMM_WORLD);
-  if (rank_ != 0)
-    return;
-  history_file_->append(static_cast<int>(step_), axial, stats.records);
-  write_summary_row(stats, iterations, axial, rve_seconds);
-  write_vtu(stats);
-  std::vector<double> positions;
-  for (const IpState<dim>& p : ip_)
-    for (unsigned int d = 0; d < dim; ++d)
-      positions.push_back(p.position[d]);
-  write_ip_points<dim>(prm_.output_directory, static_cast<int>(step_), positions, stats.records);
+  // Rank 0 writes; a failure (e.g. a full disk) stops every rank, not only it.
+  std::string problem;
+  if (rank_ == 0)
+    try
+    {
+      history_file_->append(static_cast<int>(step_), axial, stats.records);
+      write_summary_row(stats, iterations, axial, rve_seconds);
+      write_vtu(stats);
+      std::vector<double> positions;
+      for (const IpState<dim>& p : ip_)
+        for (unsigned int d = 0; d < dim; ++d)
+          positions.push_back(p.position[d]);
+      write_ip_points<dim>(prm_.output_directory, static_cast<int>(step_), positions, stats.records);
+    }
+    catch (const std::exception& e)
+    {
+      problem = e.what();
+    }
+  problem = Utilities::MPI::broadcast(MPI_COMM_WORLD, problem, 0);
+  if (!problem.empty())
+    throw std::runtime_error("load step " + std::to_string(step_) + ": " + problem);
 }
 
 // 2D: |s11 - s22| / |s11 + s22| ([LBS]). 3D: (s_max - s_min) / |s_max + s_min| of
@@ -171,8 +184,20 @@ void ExplicitSolver<dim>::write_vtu(const StepStatistics& st)
   data_out.add_data_vector(st.anisotropy, "anisotropy");
   data_out.add_data_vector(st.eq_strain, "equivalent_strain_increment");
   data_out.build_patches();
-  std::ofstream vtu(prm_.output_directory + "/" + vtu_name(step_));
-  data_out.write_vtu(vtu);
+  const std::string file = prm_.output_directory + "/" + vtu_name(step_);
+  std::ofstream vtu(file);
+  try
+  {
+    data_out.write_vtu(vtu);
+    vtu.close();
+  }
+  catch (const ExceptionBase&) // deal.II's ExcIO: reported below as I/O, naming the file
+  {
+    vtu.setstate(std::ios::badbit);
+  }
+  if (!vtu)
+    throw std::runtime_error("cannot write '" + file + "' (" + std::strerror(errno) +
+                             "): check the free space and permissions of 'Output directory'");
   pvd_records_.emplace_back(step_, vtu_name(step_));
   std::ofstream pvd(prm_.output_directory + "/solution.pvd");
   DataOutBase::write_pvd_record(pvd, pvd_records_);

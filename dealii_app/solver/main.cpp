@@ -28,6 +28,7 @@ int main(int argc, char** argv)
 {
   MPI_Init(&argc, &argv);
   int status = 0;
+  bool parsing = false; // deal.II exceptions from here on are the parameter file's
   try
   {
     using namespace fe2dem::macro;
@@ -54,7 +55,9 @@ int main(int argc, char** argv)
     else
     {
       Parameters parameters;
+      parsing = true;
       parameters.parse(prm, argv[1]);
+      parsing = false;
       if (parameters.geometry.dimension == 3)
         run<3>(parameters, resume);
       else
@@ -63,9 +66,17 @@ int main(int argc, char** argv)
   }
   catch (const dealii::ExceptionBase& e)
   {
-    std::cerr << "\nfe2dem: error in the parameter file:\n";
-    e.print_info(std::cerr);
-    std::cerr << "(fe2dem --print-parameters lists every entry with its pattern and default)\n";
+    if (parsing)
+    {
+      std::cerr << "\nfe2dem: error in the parameter file:\n";
+      e.print_info(std::cerr);
+      std::cerr << "(fe2dem --print-parameters lists every entry with its pattern and default)\n";
+    }
+    else
+    {
+      std::cerr << "\nfe2dem: error (deal.II):\n";
+      e.print_info(std::cerr);
+    }
     status = 1;
   }
   catch (const fe2dem::CouplerError& e)

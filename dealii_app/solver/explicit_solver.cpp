@@ -1,4 +1,5 @@
 #include "explicit_solver.h"
+#include "memory_estimate.h"
 
 #include "checkpoint_file.h"
 #include "corotational_material.h"
@@ -118,6 +119,7 @@ void ExplicitSolver<dim>::make_constitutive_material(const std::string& checkpoi
     throw std::runtime_error("running on " + std::to_string(n_ranks) + " MPI ranks, but the mesh has only " +
                              std::to_string(ip_.size()) + " quadrature points (RVEs): use at most "
                              "mpirun -np " + std::to_string(ip_.size()));
+  check_rve_memory(MPI_COMM_WORLD, ip_.size(), packing_particles(prm_.rve.packing + ".vars"));
   const std::shared_ptr<const fe2dem::RveFactory<dim>> factory =
     fe2dem::make_servo_rve_factory<dim>(prm_.rve.setup("none"), m.history);
   pcout_ << (checkpoint.empty() ? "creating " : "restoring ") << ip_.size() << " RVEs on " << n_ranks

@@ -1,5 +1,7 @@
 #include "path_parameters.h"
+#include "rve_tensor.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -98,13 +100,12 @@ void Parameters::declare_parameters(dealii::ParameterHandler& prm)
 
 namespace
 {
-/// Determinant of a row-major @p dim x @p dim matrix (2 or 3).
+/// Determinant of a row-major @p dim x @p dim matrix (2 or 3), by the fix's fe2dem::det.
 double determinant(const std::vector<double>& F, unsigned int dim)
 {
-  if (dim == 2)
-    return F[0] * F[3] - F[1] * F[2];
-  return F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
-         F[2] * (F[3] * F[7] - F[4] * F[6]);
+  fe2dem::Mat3 A{};
+  std::copy(F.begin(), F.end(), A.begin());
+  return dim == 2 ? fe2dem::det(fe2dem::Mat2{A[0], A[1], A[2], A[3]}) : fe2dem::det(A);
 }
 
 /// Every row of the table @p file ('#' comments, blank lines skipped), checked before any RVE exists.

@@ -166,11 +166,7 @@ void ExplicitSolver<dim>::open_output_files(const std::string& checkpoint)
   const std::string history = prm_.output_directory + "/history.h5";
   if (checkpoint.empty())
   {
-    std::vector<double> positions;
-    for (const IpState<dim>& p : ip_)
-      for (unsigned int d = 0; d < dim; ++d)
-        positions.push_back(p.position[d]);
-    history_file_ = std::make_unique<HistoryWriter>(history, positions, dim);
+    history_file_ = std::make_unique<HistoryWriter>(history, ip_positions(), dim);
     history_file_->describe_run(prm_.file, dim);
   }
   else
@@ -178,6 +174,17 @@ void ExplicitSolver<dim>::open_output_files(const std::string& checkpoint)
     history_file_ = restore_history(checkpoint, history);
     history_file_->note_resume();
   }
+}
+
+// Reference positions of the IPs, dim values each (history.h5, ip-NNNN.vtu).
+template <int dim>
+std::vector<double> ExplicitSolver<dim>::ip_positions() const
+{
+  std::vector<double> positions;
+  for (const IpState<dim>& p : ip_)
+    for (unsigned int d = 0; d < dim; ++d)
+      positions.push_back(p.position[d]);
+  return positions;
 }
 
 template <int dim>

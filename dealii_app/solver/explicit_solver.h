@@ -147,6 +147,8 @@ private:
   /// t of the load case at the end of the current (sub)step (energy.csv).
   double load_time() const;
   void open_output_files(const std::string& checkpoint);
+  /// Reference positions of the IPs, dim values each, in IP order.
+  std::vector<double> ip_positions() const;
 
   // --- checkpoints (explicit_solver_checkpoint.cpp) -------------------------
   void save_converged_state();

@@ -36,11 +36,7 @@ void ExplicitSolver<dim>::output_step(unsigned int iterations)
       history_file_->append(static_cast<int>(step_), axial, stats.records);
       write_summary_row(stats, iterations, axial, rve_seconds);
       write_vtu(stats);
-      std::vector<double> positions;
-      for (const IpState<dim>& p : ip_)
-        for (unsigned int d = 0; d < dim; ++d)
-          positions.push_back(p.position[d]);
-      write_ip_points<dim>(prm_.output_directory, static_cast<int>(step_), positions, stats.records);
+      write_ip_points<dim>(prm_.output_directory, static_cast<int>(step_), ip_positions(), stats.records);
     }
     catch (const std::exception& e)
     {

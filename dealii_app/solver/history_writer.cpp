@@ -57,12 +57,15 @@ void copy_attributes(hid_t from, hid_t to)
   H5Aiterate2(from, H5_INDEX_NAME, H5_ITER_INC, &index, copy_attribute, &to);
 }
 
-std::string program_and_date()
+constexpr const char* program = "fe2dem " FE2DEM_VERSION " (git " FE2DEM_GIT_COMMIT ")";
+
+/// Now, UTC, ISO 8601.
+std::string utc_now()
 {
   char date[32];
   const std::time_t now = std::time(nullptr);
   std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
-  return std::string("fe2dem " FE2DEM_VERSION " (git " FE2DEM_GIT_COMMIT ") at ") + date;
+  return date;
 }
 
 /// Creates an extendible dataset [0][n_ip][width] (width 0: [0][n_ip]; n_ip 0: [0]).
@@ -174,9 +177,8 @@ void HistoryWriter::describe_run(const std::string& parameter_file, unsigned int
   std::ifstream in(parameter_file);
   std::ostringstream text;
   text << in.rdbuf();
-  const std::string stamp = program_and_date();
-  write_string_attribute(file_, "created_by", stamp.substr(0, stamp.find(" at ")));
-  write_string_attribute(file_, "created", stamp.substr(stamp.find(" at ") + 4));
+  write_string_attribute(file_, "created_by", program);
+  write_string_attribute(file_, "created", utc_now());
   write_string_attribute(file_, "parameter_file", std::filesystem::absolute(parameter_file).string());
   write_string_attribute(file_, "parameters", text.str());
   write_string_attribute(file_, "dimension", std::to_string(dim));
@@ -193,7 +195,7 @@ void HistoryWriter::describe_run(const std::string& parameter_file, unsigned int
 
 void HistoryWriter::note_resume()
 {
-  write_string_attribute(file_, "resumed_by", program_and_date());
+  write_string_attribute(file_, "resumed_by", std::string(program) + " at " + utc_now());
   H5Fflush(file_, H5F_SCOPE_GLOBAL);
 }
 

@@ -62,24 +62,24 @@ void write_ip_points(const std::string& directory, int step, const std::vector<d
                                      std::pair{"sigma", &IpRecord<dim>::sigma}})
     write_array(out, name, "Float64", n, dim * dim,
                 [&, m = member](std::size_t p, std::size_t c) { return (records[p].*m)[c]; });
-  // Every statistic, in the order of the field list, by name.
-  RveStatistics<dim>().for_each([&](const char* name, const char*, const char*, const auto& first) {
-    using T = std::decay_t<decltype(first)>;
-    constexpr std::size_t width = std::is_arithmetic_v<T> ? 1 : dim * dim;
-    const char* type = std::is_same_v<T, long> ? "Int64" : "Float64";
-    std::vector<T> values;
-    for (const IpRecord<dim>& r : records)
-      r.statistics.for_each([&](const char* other, const char*, const char*, const auto& v) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(v)>, T>)
-          if (std::string(other) == name)
-            values.push_back(v);
-      });
-    write_array(out, name, type, n, width, [&](std::size_t p, std::size_t c) {
-      if constexpr (std::is_arithmetic_v<T>)
-        return values[p];
+  // Every statistic: each IP's packed row (the field list's order, counts
+  // exact), one array per field.
+  constexpr std::size_t row = RveStatistics<dim>::packed_size();
+  std::vector<double> packed(n * row);
+  for (std::size_t p = 0; p < n; ++p)
+    records[p].statistics.pack(&packed[p * row]);
+  std::size_t offset = 0;
+  RveStatistics<dim>().for_each([&](const char* name, const char*, const char*, const auto& field) {
+    using T = std::decay_t<decltype(field)>;
+    const std::size_t width = std::is_arithmetic_v<T> ? 1 : dim * dim;
+    const auto value = [&, at = offset](std::size_t p, std::size_t c) {
+      if constexpr (std::is_same_v<T, long>)
+        return static_cast<long>(packed[p * row + at]);
       else
-        return values[p][c];
-    });
+        return packed[p * row + at + c];
+    };
+    write_array(out, name, std::is_same_v<T, long> ? "Int64" : "Float64", n, width, value);
+    offset += width;
   });
   out << "      </PointData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
   out.close();

@@ -1,5 +1,6 @@
 #include "liggghts_instance.h"
 
+#include "liggghts_error_trap.h"
 #include "quiet_output.h"
 #include "register_styles.h"
 
@@ -26,9 +27,11 @@ LiggghtsInstance::LiggghtsInstance(MPI_Comm comm, const std::string& log_file, b
   for (auto& a : args)
     argv.push_back(&a[0]);
   {
+    LiggghtsErrorTrap trap;
     QuietOutput quiet; // "Style collision" warnings go to stdout before -screen applies
     lmp_ = new LAMMPS_NS::LAMMPS(static_cast<int>(argv.size()), argv.data(), comm);
   }
+  LiggghtsErrorTrap trap;
   register_styles(lmp_);
 }
 
@@ -44,6 +47,7 @@ LiggghtsInstance::~LiggghtsInstance()
 void LiggghtsInstance::command(const std::string& line)
 {
   std::string copy = line;
+  LiggghtsErrorTrap trap;
   if (line.compare(0, 4, "run ") == 0)
     lmp_->input->one(&copy[0]);
   else
@@ -55,6 +59,7 @@ void LiggghtsInstance::command(const std::string& line)
 
 void LiggghtsInstance::file(const std::string& path)
 {
+  LiggghtsErrorTrap trap;
   QuietOutput quiet;
   lmp_->input->file(path.c_str());
 }

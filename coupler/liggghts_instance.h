@@ -3,6 +3,10 @@
  * One LIGGGHTS instance owned from C++: created on a communicator (usually
  * MPI_COMM_SELF) with screen and log off, FE2DEM's styles registered, and
  * Debian's construction chatter kept away from the user's terminal.
+ *
+ * Every call into LIGGGHTS runs under a LiggghtsErrorTrap: an error LIGGGHTS
+ * raises throws LiggghtsError (liggghts_error_trap.h) instead of ending the
+ * process, and the instance must then be discarded.
  */
 #pragma once
 
@@ -31,9 +35,11 @@ public:
   LiggghtsInstance(const LiggghtsInstance&) = delete;
   LiggghtsInstance& operator=(const LiggghtsInstance&) = delete;
 
-  /// Executes one input-script line. LIGGGHTS exits on error: validate first.
+  /// Executes one input-script line.
+  /// @throws LiggghtsError if LIGGGHTS raises an error; the instance is then unusable.
   void command(const std::string& line);
   /// Executes an input script file.
+  /// @throws LiggghtsError as command() does.
   void file(const std::string& path);
   /// Defines an index-style variable, as `-var name value` does.
   void set_variable(const std::string& name, const std::string& value);

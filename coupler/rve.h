@@ -11,6 +11,7 @@
 #pragma once
 
 #include "rve_response.h"
+#include "rve_setup.h"
 
 #include <Eigen/Dense>
 
@@ -58,11 +59,10 @@ public:
    */
   virtual void set_timed_steps(long steps) = 0;
   /**
-   * Overrides the step budget after which a solve fails, until the next
-   * rollback or restore (which bring the template's budget back). Tests
-   * use it to inject a fault.
+   * Testing: makes the next solve fail with @p fault. A step budget lasts
+   * until the next rollback or restore (which bring the template's back).
    */
-  virtual void set_step_budget(long steps) = 0;
+  virtual void inject_fault(RveFault fault) = 0;
 
   /// Accepts the current state as the converged load step.
   virtual void commit() = 0;

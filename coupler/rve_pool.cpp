@@ -256,10 +256,10 @@ void RvePool<dim>::write_particles(std::size_t k, const std::string& prefix, lon
 }
 
 template <int dim>
-void RvePool<dim>::set_step_budget(std::size_t k, long steps)
+void RvePool<dim>::inject_fault(std::size_t k, RveFault fault)
 {
   if (owner_.at(k) == rank_)
-    local_.at(k)->set_step_budget(steps);
+    local_.at(k)->inject_fault(fault);
 }
 
 template <int dim>

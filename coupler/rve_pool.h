@@ -116,11 +116,10 @@ public:
   void write_particles(std::size_t k, const std::string& prefix, long timestep) const;
 
   /**
-   * Sets the step budget of RVE @p k (on its owner; no communication),
-   * e.g. 1 to inject a fault in tests (Rve::set_step_budget). Not part of
-   * the saved state: a rollback or restore drops it.
+   * Testing: the next solve of RVE @p k fails with @p fault (on its owner;
+   * no communication; Rve::inject_fault). Not part of the saved state.
    */
-  void set_step_budget(std::size_t k, long steps);
+  void inject_fault(std::size_t k, RveFault fault);
 
   int owner(std::size_t k) const { return owner_[k]; }
   std::size_t size() const { return points_.size(); }

@@ -1,6 +1,7 @@
 /**
  * @file rve_setup.h
- * What it takes to build an RVE, and where its trial solves start. Plain
+ * What it takes to build an RVE, where its trial solves start, and the
+ * faults tests can inject into it. Plain
  * data, no LIGGGHTS types: the macro side fills it from its parameters.
  */
 #pragma once
@@ -31,5 +32,12 @@ enum class HistoryMode
 {
   committed, ///< from the last committed state ([LBS])
   continuous ///< from wherever the previous solve ended ([LSYF])
+};
+
+/// Faults tests inject into an RVE's next solve (subsection Faults of fe2dem).
+enum class RveFault
+{
+  step_budget,   ///< a step budget of 1: the solve ends without convergence
+  liggghts_error ///< F11 of the next solve times 1e10: LIGGGHTS loses particles and raises an error
 };
 } // namespace fe2dem

@@ -1,5 +1,6 @@
 #include "servo_rve.h"
 
+#include "liggghts_error_trap.h"
 #include "particle_dump.h"
 #include "servo_rve_factory.h"
 #include "template_check.h"
@@ -154,7 +155,11 @@ const typename ServoRve<dim>::Result& ServoRve<dim>::solve(const Matrix& F, long
   const bool bounded = timed_steps_ == 0 && limit_steps(step_limit);
   if (fix_->timed_steps() != timed_steps_)
     fix_->set_timed_steps(timed_steps_);
-  fix_->set_deformation(F);
+  Matrix applied = F;
+  if (stretch_next_)
+    applied[0] *= 1e10;
+  stretch_next_ = false;
+  fix_->set_deformation(applied);
   run_until_done(bounded);
   return fix_->result();
 }
@@ -181,6 +186,15 @@ template <int dim>
 void ServoRve<dim>::set_step_budget(long steps)
 {
   fix_->set_max_steps(steps);
+}
+
+template <int dim>
+void ServoRve<dim>::inject_fault(RveFault fault)
+{
+  if (fault == RveFault::step_budget)
+    set_step_budget(1);
+  else
+    stretch_next_ = true;
 }
 
 template <int dim>
@@ -269,11 +283,19 @@ void ServoRve<dim>::run_until_done(bool bounded)
   // lists rebuilt from scratch), as a restored instance must: that makes
   // restore and rollback bitwise; later chunks skip it.
   bool first = true;
-  while (fix_->status() == Fix::running)
+  try
   {
-    const std::string n = std::to_string(fix_->check_interval());
-    instance_->command(first ? "run " + n + " post no" : "run " + n + " pre no post no");
-    first = false;
+    while (fix_->status() == Fix::running)
+    {
+      const std::string n = std::to_string(fix_->check_interval());
+      instance_->command(first ? "run " + n + " post no" : "run " + n + " pre no post no");
+      first = false;
+    }
+  }
+  catch (const LiggghtsError& e)
+  {
+    last_seconds_ = MPI_Wtime() - t0;
+    recover_from(e);
   }
   last_seconds_ = MPI_Wtime() - t0;
   last_converged_ = fix_->status() == Fix::converged;
@@ -284,6 +306,19 @@ void ServoRve<dim>::run_until_done(bool bounded)
   if (!last_converged_)
     throw RveSolveError(fix_->status(),
                         std::string(Fix::status_name(fix_->status())) + ": " + fix_->failure_reason());
+}
+
+template <int dim>
+void ServoRve<dim>::recover_from(const std::exception& e)
+{
+  last_converged_ = false;
+  if (committed_bytes_ == 0) // the packing as built did not relax: nothing to return to
+    throw std::runtime_error(std::string("LIGGGHTS error while relaxing the packing as built: ") + e.what());
+  open_instance(committed_file_); // discards the broken instance
+  at_committed_state_ = true;
+  throw RveSolveError(RveSolveError::liggghts_error,
+                      std::string("LIGGGHTS error: ") + e.what() +
+                        "; the RVE was rebuilt from its last converged state");
 }
 } // namespace fe2dem
 

@@ -10,6 +10,11 @@
  * contact history, fix state) through bytes, e.g. to another MPI rank.
  * Every solve begins with a full LIGGGHTS set-up (neighbour lists rebuilt),
  * so a restored instance continues bit for bit as the original would.
+ *
+ * An error LIGGGHTS raises during a solve (a lost particle, a neighbour-list
+ * overflow) leaves its instance half-way through a run: the RVE rebuilds the
+ * instance from the committed state and the solve throws RveSolveError, so
+ * the macro side handles it as any other failed RVE (report, cut or stop).
  */
 #pragma once
 
@@ -29,8 +34,11 @@ namespace fe2dem
 class RveSolveError : public std::runtime_error
 {
 public:
+  /// status of a solve in which LIGGGHTS itself raised an error
+  static constexpr int liggghts_error = -1;
   RveSolveError(int s, const std::string& what) : std::runtime_error(what), status(s) {}
-  int status; ///< a FixRveServo<dim>::Status (the same values in 2D and 3D)
+  /// a FixRveServo<dim>::Status (the same values in 2D and 3D), or liggghts_error
+  int status;
 };
 
 /// @tparam dim 2 or 3: the template's `dimension` (FixRveServo<dim>).
@@ -56,7 +64,8 @@ public:
    * Applies macro deformation @p F (row-major, det F > 0), relaxes and servos.
    * In committed mode the solve starts from the last committed state.
    * @throws RveSolveError if the fix reports no convergence, an escaped
-   *         particle or a blow-up.
+   *         particle or a blow-up, or LIGGGHTS raises an error (the RVE is
+   *         then back at its committed state).
    *
    * Multiple time stepping ([LSYF] Eq. 66): with @p step_limit > 0 the solve
    * runs at most that many DEM steps (rounded up to a multiple of the fix's
@@ -76,7 +85,9 @@ public:
   void set_step_limit(long steps) override { step_limit_ = steps; }
   /// Applied to the fix (FixRveServo::set_timed_steps) at every solve, restored instances included.
   void set_timed_steps(long steps) override { timed_steps_ = steps; }
-  void set_step_budget(long steps) override;
+  void inject_fault(RveFault fault) override;
+  /// Overrides the step budget after which a solve fails, until the next rollback or restore.
+  void set_step_budget(long steps);
   /// Accepts the current state as the converged load step.
   void commit() override;
   /// Returns exactly to the last committed state.
@@ -103,6 +114,8 @@ private:
   ServoRve(const RveSetup& setup, HistoryMode mode, const std::string& restart_file, FromRestart);
   void open_instance(const std::string& restart_file);
   void run_until_done(bool bounded = false);
+  /// Rebuilds the instance @p e left half-way from the committed state; throws RveSolveError.
+  [[noreturn]] void recover_from(const std::exception& e);
   /// Sets the fix's step budget for the next solve: @p step_limit or the template's budget.
   bool limit_steps(long step_limit);
 
@@ -120,6 +133,7 @@ private:
   bool last_converged_ = true;
   long step_limit_ = 0;               ///< of set_step_limit()
   long timed_steps_ = 0;              ///< of set_timed_steps()
+  bool stretch_next_ = false;         ///< inject_fault(RveFault::liggghts_error) pending
   mutable RveResponse<dim> response_;   ///< rve_to_macro of the fix's result
 };
 

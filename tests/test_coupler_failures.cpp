@@ -1,9 +1,13 @@
 // Coupler failure handling: a broken RVE template is reported with file and
 // line before any instance exists; an exploding RVE raises a CouplerError
-// naming IP, position, load step and reason on every rank.
+// naming IP, position, load step and reason on every rank; an error raised
+// inside LIGGGHTS becomes an exception (not MPI_Abort), reported the same way,
+// and the RVE goes on from its committed state.
 // Usage: [mpirun -np N] test_coupler_failures CASE TEMPLATE PACKING_PREFIX
-//   CASE: broken_template | exploding
+//   CASE: broken_template | exploding | liggghts_error
 #include "check.h"
+#include "liggghts_error_trap.h"
+#include "liggghts_instance.h"
 #include "rve_pool.h"
 #include "servo_rve_factory.h"
 #include "template_check.h"
@@ -56,6 +60,34 @@ int main(int argc, char** argv)
     F[1] << 0.8, 0.0, 0.0, 0.8;
     check.throws_with("exploding RVE names the IP", [&] { pool.solve(F); }, "RVE of IP 101 at (0.75, 0.5)");
     check.throws_with("... and the load step", [&] { pool.solve(F); }, "load step 1");
+  }
+  else if (c == "liggghts_error")
+  {
+    check.truth("LIGGGHTS' Error methods are interposed", LiggghtsErrorTrap::installed());
+    {
+      // Raised inside libliggghts.so (Input: error->all), reached through its PLT.
+      LiggghtsInstance broken;
+      check.throws_with("an unknown command throws LiggghtsError with LIGGGHTS' text",
+                        [&] { broken.command("no_such_command 1"); }, "Unknown command: no_such_command");
+    } // a broken instance can be destroyed
+    LiggghtsInstance next;
+    next.command("variable x equal 2");
+    check.truth("a new instance works after one threw", true);
+
+    RvePool<2> pool(MPI_COMM_WORLD, factory(), points);
+    std::vector<Eigen::Matrix2d> F(2, Eigen::Matrix2d::Identity());
+    F[0] << 1.001, 0.0, 0.0, 1.0;
+    const std::vector<RveResponse<2>> before = pool.solve(F);
+    F[1] << 1e10, 0.0, 0.0, 1.0; // IP 101: frame particles far outside the box
+    check.throws_with("a LIGGGHTS error names the IP, on every rank", [&] { pool.solve(F); },
+                      "RVE of IP 101 at (0.75, 0.5)");
+    pool.rollback();
+    check.throws_with("... and quotes LIGGGHTS' message", [&] { pool.solve(F); }, "LIGGGHTS error: particle id");
+    pool.rollback();
+    F[1] = Eigen::Matrix2d::Identity();
+    const std::vector<RveResponse<2>> after = pool.solve(F);
+    check.truth("the rebuilt RVE solves again, as before the error",
+                after[1].sigma == before[1].sigma && after[0].sigma == before[0].sigma);
   }
   else
     check.truth("known case", false, c);

@@ -125,7 +125,18 @@ void RvePathRunner<dim>::write_row(const Result& r, unsigned int stress_iteratio
 template <int dim>
 const typename RvePathRunner<dim>::Result& RvePathRunner<dim>::solve(const Matrix& F)
 {
-  const Result& r = rve_.solve(F);
+  try
+  {
+    rve_.solve(F);
+  }
+  catch (const fe2dem::RveSolveError& e)
+  {
+    // Name the step; the rows before it are complete and stay.
+    throw std::runtime_error("the RVE solve of step " + std::to_string(step_) + " failed: " +
+                             e.what() + (step_ == 0 ? std::string(". rve.csv holds no step")
+                                                     : ". rve.csv holds steps 0 to " + std::to_string(step_ - 1)));
+  }
+  const Result& r = rve_.result();
   dem_steps_in_step_ += r.dem_steps;
   membrane_steps_in_step_ += r.membrane_steps;
   return r;

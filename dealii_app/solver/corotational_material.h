@@ -63,7 +63,7 @@ public:
   {
     return inner_->gather_committed_states(root);
   }
-  void inject_fault(unsigned int ip) override { inner_->inject_fault(ip); }
+  void inject_fault(unsigned int ip, RveFault fault) override { inner_->inject_fault(ip, fault); }
   void write_particles(unsigned int ip, const std::string& prefix, long step) const override
   {
     inner_->write_particles(ip, prefix, step);

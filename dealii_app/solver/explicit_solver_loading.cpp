@@ -163,9 +163,10 @@ void ExplicitSolver<dim>::inject_fault_if_due(bool first_attempt)
   const Faults& f = prm_.faults;
   if (f.inject_ip < 0 || fault_injected_ || !first_attempt || step_ != f.inject_step)
     return;
-  material_->inject_fault(f.inject_ip);
+  material_->inject_fault(f.inject_ip, f.inject_kind);
   fault_injected_ = true;
   pcout_ << "load step " << step_ << ": injected a fault into the RVE of IP " << f.inject_ip
+         << (f.inject_kind == RveFault::liggghts_error ? " (a LIGGGHTS error)" : "")
          << " ('Inject fault' of subsection Faults)" << std::endl;
 }
 

@@ -444,9 +444,10 @@ void Faults::declare_parameters(dealii::ParameterHandler& prm)
                     "stops with the report.");
   prm.declare_entry("Max step cuts", "3", Integer(0), "Halvings of one load step before stopping.");
   prm.declare_entry("Inject fault", "", Anything(),
-                    "Testing only: 'IP STEP' gives the RVE of quadrature point IP a step budget "
-                    "of 1 at the first attempt of load step STEP, so that its solve fails. "
-                    "Empty: none.");
+                    "Testing only: 'IP STEP [budget|liggghts]' makes the solve of the RVE of "
+                    "quadrature point IP fail at the first attempt of load step STEP: 'budget' "
+                    "(default) with a step budget of 1, 'liggghts' with an error LIGGGHTS raises "
+                    "itself (F11 of that solve times 1e10, so particles are lost). Empty: none.");
   prm.leave_subsection();
 }
 
@@ -462,12 +463,15 @@ void Faults::parse_parameters(dealii::ParameterHandler& prm)
   {
     std::istringstream s(inject);
     long ip = -1, step = 0;
-    std::string extra;
-    if (!(s >> ip >> step) || (s >> extra) || ip < 0 || step < 1)
+    std::string kind = "budget", extra;
+    if (!(s >> ip >> step) || ip < 0 || step < 1 || ((s >> kind) && kind != "budget" && kind != "liggghts") ||
+        (s >> extra))
       throw std::runtime_error("subsection Faults: 'Inject fault' = '" + inject +
-                               "' must be two integers 'IP STEP' (IP >= 0, STEP >= 1) or empty");
+                               "' must be 'IP STEP' or 'IP STEP budget|liggghts' (IP >= 0, STEP >= 1), "
+                               "or empty");
     inject_ip = static_cast<int>(ip);
     inject_step = static_cast<unsigned int>(step);
+    inject_kind = kind == "liggghts" ? RveFault::liggghts_error : RveFault::step_budget;
   }
 }
 

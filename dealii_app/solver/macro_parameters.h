@@ -179,8 +179,9 @@ struct Faults
 {
   bool cut_step;           ///< cut the load step and retry (else stop with a checkpoint)
   unsigned int max_cuts;   ///< halvings of one load step before stopping
-  int inject_ip = -1;      ///< test only: IP whose RVE gets a step budget of 1 ...
+  int inject_ip = -1;      ///< test only: IP whose RVE gets a fault of kind inject_kind ...
   unsigned int inject_step = 0; ///< ... at the first attempt of this load step
+  RveFault inject_kind = RveFault::step_budget;
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm);
 };

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "ip_state.h"
+#include "rve_setup.h"
 
 #include <deal.II/base/tensor.h>
 
@@ -68,8 +69,8 @@ public:
   virtual void rebalance() {}
   /// Committed state of every point, on rank @p root (empty if stateless). Collective.
   virtual std::vector<std::vector<char>> gather_committed_states(int /*root*/) const { return {}; }
-  /// Testing: the next evaluation fails at point @p ip (subsection Faults).
-  virtual void inject_fault(unsigned int /*ip*/) {}
+  /// Testing: the next evaluation fails at point @p ip with @p fault (subsection Faults).
+  virtual void inject_fault(unsigned int /*ip*/, RveFault /*fault*/) {}
   /// Particle pictures of point @p ip under @p prefix (no-op without particles).
   virtual void write_particles(unsigned int /*ip*/, const std::string& /*prefix*/, long /*step*/) const {}
 };

@@ -42,7 +42,7 @@ public:
     return pool_->gather_committed_states(root);
   }
   /// A step budget of 1 makes the RVE's next solve fail at its first check.
-  void inject_fault(unsigned int ip) override { pool_->set_step_budget(ip, 1); }
+  void inject_fault(unsigned int ip, RveFault fault) override { pool_->inject_fault(ip, fault); }
   void write_particles(unsigned int ip, const std::string& prefix, long step) const override
   {
     pool_->write_particles(ip, prefix, step);

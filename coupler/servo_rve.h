@@ -8,8 +8,11 @@
  * (a LIGGGHTS restart file in /dev/shm, i.e. memory), `rollback()` returns
  * to it exactly, `serialise()` / `restore()` move the full state (particles,
  * contact history, fix state) through bytes, e.g. to another MPI rank.
- * Every solve begins with a full LIGGGHTS set-up (neighbour lists rebuilt),
- * so a restored instance continues bit for bit as the original would.
+ * The first solve after a commit, rollback or restore begins with a full
+ * LIGGGHTS set-up (neighbour lists rebuilt, forces computed afresh); later
+ * solves continue the trajectory as one run would (`run N pre no`). States
+ * are saved and moved only at commits, so a restored instance continues bit
+ * for bit as the original would.
  *
  * An error LIGGGHTS raises during a solve (a lost particle, a neighbour-list
  * overflow) leaves its instance half-way through a run: the RVE rebuilds the
@@ -98,6 +101,8 @@ public:
   std::vector<char> committed_state() const override;
   /// Wall seconds of the last solve.
   double last_solve_seconds() const override { return last_seconds_; }
+  /// Of last_solve_seconds(), the seconds inside LIGGGHTS' time-step loops (its TIME_LOOP timer).
+  double last_solve_loop_seconds() const { return last_loop_seconds_; }
   void write_particles(const std::string& prefix, long timestep) const override;
 
   const Result& result() const { return fix_->result(); }
@@ -124,10 +129,12 @@ private:
   std::string committed_file_;
   std::size_t committed_bytes_ = 0;
   bool at_committed_state_ = false;
+  bool full_setup_next_ = true; ///< the next solve begins with LIGGGHTS' full set-up
   Matrix committed_F_ = identity<dim>(); ///< F of the committed state
   std::unique_ptr<LiggghtsInstance> instance_;
   Fix* fix_ = nullptr;
   double last_seconds_ = 0.0;
+  double last_loop_seconds_ = 0.0;
   long budget_ = 0;      ///< the template's step budget (max_steps), restored after bounded solves
   bool limited_ = false; ///< the fix's max_steps is currently a bound of limit_steps()
   bool last_converged_ = true;

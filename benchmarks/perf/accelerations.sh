@@ -11,7 +11,9 @@
 #   skip1e-5, skip1e-4 (warm + skip tolerance), check10 (warm + RVE
 #   convergence checks every 10 DEM steps instead of 50), fast (check10 +
 #   skip1e-5), mtsN (check10 + multiple time stepping: at most N DEM steps
-#   per RVE and DR iteration until (M9) first holds, e.g. mts50).
+#   per RVE and DR iteration until (M9) first holds, e.g. mts50); a suffix
+#   +incremental on any of them adds 'Frequency estimate = incremental' of
+#   dynamic relaxation (e.g. mts20+incremental).
 #   Default: the first six.
 # ACCEL_WORKDIR=DIR keeps each run in DIR/MESH_SETTING with a checkpoint
 # after every load step, and a later call with the same DIR resumes it
@@ -29,6 +31,8 @@ read -r -a settings <<<"${settings[*]}"
 source "$root/benchmarks/common.sh"
 overrides() {
   case $1 in
+    *+incremental) overrides "${1%+incremental}"
+      printf 'subsection Dynamic relaxation\n  set Frequency estimate = incremental\nend\n' ;;
     strict) printf 'subsection Material\n  set History = committed\n  set Skip tolerance = 0\nend\n' ;;
     warm) printf 'subsection Material\n  set History = continuous\n  set Skip tolerance = 0\nend\n' ;;
     skip*) printf 'subsection Material\n  set History = continuous\n  set Skip tolerance = %s\nend\n' "${1#skip}" ;;

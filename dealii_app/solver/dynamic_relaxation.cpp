@@ -12,18 +12,51 @@ DynamicRelaxationIntegrator::DynamicRelaxationIntegrator(const DynamicRelaxation
 {
 }
 
+double DynamicRelaxationIntegrator::estimate_frequency(const dealii::Vector<double>& u,
+                                                       const dealii::Vector<double>& f_int,
+                                                       const Constraints& fixed)
+{
+  const bool incremental = prm_.frequency_estimate == DynamicRelaxation::FrequencyEstimate::incremental;
+  if (incremental && have_last_)
+  {
+    // Tangent stiffness along the last step's motion, prescribed dofs
+    // included (a ramped load moves them); kept when the change says nothing
+    // (no motion, or a softening / noisy RVE response).
+    double num = 0.0, den = 0.0;
+    for (dealii::types::global_dof_index i = 0; i < mass_.size(); ++i)
+    {
+      const double du = u[i] - u_last_[i];
+      num += du * (f_int[i] - f_last_[i]);
+      den += mass_[i] * du * du;
+    }
+    if (num > 0.0 && den > 0.0)
+      omega_ = std::min(omega_max_, std::sqrt(num / den));
+  }
+  else
+  {
+    double num = 0.0, den = 0.0;
+    for (dealii::types::global_dof_index i = 0; i < mass_.size(); ++i)
+      if (!fixed.count(i))
+      {
+        num += u[i] * f_int[i];
+        den += mass_[i] * u[i] * u[i];
+      }
+    omega_ = (num > 0.0 && den > 0.0) ? std::sqrt(num / den) : omega_max_; // guard of (M6)
+  }
+  if (incremental)
+  {
+    u_last_ = u;
+    f_last_ = f_int;
+    have_last_ = true;
+  }
+  return omega_;
+}
+
 double DynamicRelaxationIntegrator::advance(dealii::Vector<double>& u, dealii::Vector<double>& v,
                                             const dealii::Vector<double>& f_int,
                                             const dealii::Vector<double>& f_ext, const Constraints& fixed)
 {
-  double num = 0.0, den = 0.0;
-  for (dealii::types::global_dof_index i = 0; i < mass_.size(); ++i)
-    if (!fixed.count(i))
-    {
-      num += u[i] * f_int[i];
-      den += mass_[i] * u[i] * u[i];
-    }
-  const double omega = (num > 0.0 && den > 0.0) ? std::sqrt(num / den) : omega_max_; // guard of (M6)
+  const double omega = estimate_frequency(u, f_int, fixed);
   const double xi = prm_.damping_ratio, alpha = 2.0 * xi * omega;
   const double dt = std::min(dt_stable_, prm_.safety_factor * 2.0 / omega * (std::sqrt(xi * xi + 1.0) - xi));
   double e_kin = 0.0;

@@ -3,7 +3,9 @@
  * The time integrator of quasi-static load steps, physics.md (M3)-(M9):
  * central differences with mass-proportional damping, the damping from the
  * Rayleigh quotient (M6, M7), the step (M8) capped by the stability limit
- * of the mesh, and the kinetic-energy criterion (M9). The load-step driver
+ * of the mesh, and the kinetic-energy criterion (M9). omega is the secant
+ * estimate (M6) or, with 'Frequency estimate = incremental', the Rayleigh
+ * quotient of the last iteration's change. The load-step driver
  * (ExplicitSolver::relax_load_step) calls advance() until converged(); an
  * explicit-dynamics integrator can stand beside it with the same shape.
  */
@@ -29,8 +31,12 @@ public:
    */
   DynamicRelaxationIntegrator(const DynamicRelaxation& prm, const dealii::Vector<double>& mass,
                               double omega_max);
-  /// Starts a load step: the largest kinetic energy so far is forgotten.
-  void start() { e_max_ = 0.0; }
+  /// Starts a load step: the largest kinetic energy and the last iterate are forgotten.
+  void start()
+  {
+    e_max_ = 0.0;
+    have_last_ = false;
+  }
   /**
    * One iteration on the dofs not in @p fixed: updates @p v and @p u from
    * the residual f_ext - f_int. @return kinetic energy after it.
@@ -43,10 +49,20 @@ public:
     return it >= prm_.min_iterations && (e_max_ == 0.0 || e_kin <= prm_.kinetic_tolerance * e_max_);
   }
 
+  /// omega used by the last advance() [1/time].
+  double omega() const { return omega_; }
+
 private:
+  /// omega of (M6) at the iterate @p u with internal force @p f_int (see 'Frequency estimate').
+  double estimate_frequency(const dealii::Vector<double>& u, const dealii::Vector<double>& f_int,
+                            const Constraints& fixed);
+
   const DynamicRelaxation& prm_;
   const dealii::Vector<double>& mass_;
   double omega_max_, dt_stable_;
   double e_max_ = 0.0;
+  double omega_ = 0.0;
+  bool have_last_ = false;                ///< u_last_, f_last_ hold the previous iterate of this step
+  dealii::Vector<double> u_last_, f_last_; ///< incremental estimate: U and f_int of the previous iterate
 };
 } // namespace fe2dem::macro

@@ -151,6 +151,15 @@ void MaterialParameters::check_for_dynamics() const
 void DynamicRelaxation::declare_parameters(dealii::ParameterHandler& prm)
 {
   prm.enter_subsection("Dynamic relaxation");
+  prm.declare_entry("Frequency estimate", "secant", Selection("secant|incremental"),
+                    "omega of (M6)-(M8). secant ([LBS]): U^T f_int / U^T M U over the free dofs, "
+                    "the material's secant stiffness; under a confining pressure or past a peak "
+                    "it lies far above the stiffness that governs the remaining motion, and the "
+                    "step is over-damped. incremental: dU^T df_int / dU^T M dU over the last "
+                    "iteration's change (all dofs), the tangent stiffness along the current "
+                    "motion (Underwood's local estimate); the previous value is kept when that "
+                    "quotient is not positive, and the first iteration of a load step uses the "
+                    "secant one.");
   prm.declare_entry("Damping ratio", "1.0", Double(0.0), "xi of (M7)/(M8).");
   prm.declare_entry("Safety factor", "0.5", Double(0.0, 1.0), "gamma of (M8), < 1.");
   prm.declare_entry("Kinetic energy tolerance", "1e-3", Double(0.0),
@@ -171,6 +180,8 @@ void DynamicRelaxation::declare_parameters(dealii::ParameterHandler& prm)
 void DynamicRelaxation::parse_parameters(dealii::ParameterHandler& prm)
 {
   prm.enter_subsection("Dynamic relaxation");
+  frequency_estimate = prm.get("Frequency estimate") == "incremental" ? FrequencyEstimate::incremental
+                                                                      : FrequencyEstimate::secant;
   damping_ratio = prm.get_double("Damping ratio");
   safety_factor = prm.get_double("Safety factor");
   kinetic_tolerance = prm.get_double("Kinetic energy tolerance");

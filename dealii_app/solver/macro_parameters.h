@@ -73,6 +73,13 @@ struct FiniteElements
 /// subsection Dynamic relaxation: physics.md (M3)-(M9).
 struct DynamicRelaxation
 {
+  /// How omega of (M6) is estimated at each iteration.
+  enum class FrequencyEstimate
+  {
+    secant,     ///< (M6): U^T f_int / U^T M U over the free dofs ([LBS])
+    incremental ///< the change over the last iteration: dU^T df_int / dU^T M dU over all dofs
+  };
+  FrequencyEstimate frequency_estimate;
   double damping_ratio, safety_factor, kinetic_tolerance;
   unsigned int max_iterations, min_iterations;
   unsigned int ramp_iterations; ///< the step's load grows over this many iterations (0: at once)

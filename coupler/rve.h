@@ -75,6 +75,8 @@ public:
 
   /// Wall seconds of the last solve (the cost RvePool balances).
   virtual double last_solve_seconds() const = 0;
+  /// Of last_solve_seconds(), the seconds inside the DEM code's time-step loop (0 if not known).
+  virtual double last_solve_loop_seconds() const { return 0.0; }
   /// Writes particle pictures of the current state (see particle_dump.h).
   virtual void write_particles(const std::string& prefix, long timestep) const = 0;
 };

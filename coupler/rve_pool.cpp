@@ -138,6 +138,7 @@ std::vector<RveResponse<dim>> RvePool<dim>::solve(const std::vector<Tensor>& F)
                                 " quadrature points");
   committed_ = false;
   const double t0 = MPI_Wtime();
+  local_loop_seconds_ = 0.0;
   constexpr std::size_t width = record_size<dim>();
   std::vector<double> mine;
   mine.reserve(local_.size() * width);
@@ -170,6 +171,7 @@ std::vector<RveResponse<dim>> RvePool<dim>::solve(const std::vector<Tensor>& F)
         r = rve->response();
       }
       seconds = rve->last_solve_seconds();
+      local_loop_seconds_ += rve->last_solve_loop_seconds();
     }
     mine.push_back(static_cast<double>(k));
     mine.push_back(seconds);

@@ -129,6 +129,8 @@ public:
   const std::vector<double>& costs() const { return cost_; }
   /// Wall seconds this rank spent in RVE solves during the last solve().
   double last_local_seconds() const { return local_seconds_; }
+  /// Of last_local_seconds(), the seconds inside the RVEs' time-step loops (Rve::last_solve_loop_seconds).
+  double last_local_loop_seconds() const { return local_loop_seconds_; }
 
 private:
   using Make = std::function<std::unique_ptr<Rve<dim>>(std::size_t k)>;
@@ -151,6 +153,7 @@ private:
   int load_step_ = 0;
   bool committed_ = true;
   double local_seconds_ = 0.0;
+  double local_loop_seconds_ = 0.0;
   double skip_tolerance_ = 0.0;
   long step_limit_ = 0;
   long timed_steps_ = 0;

@@ -102,7 +102,7 @@ public:
   /// Wall seconds of the last solve.
   double last_solve_seconds() const override { return last_seconds_; }
   /// Of last_solve_seconds(), the seconds inside LIGGGHTS' time-step loops (its TIME_LOOP timer).
-  double last_solve_loop_seconds() const { return last_loop_seconds_; }
+  double last_solve_loop_seconds() const override { return last_loop_seconds_; }
   void write_particles(const std::string& prefix, long timestep) const override;
 
   const Result& result() const { return fix_->result(); }

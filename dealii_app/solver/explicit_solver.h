@@ -131,7 +131,7 @@ private:
   static double stress_ratio(const dealii::Tensor<2, dim>& sigma);
   StepStatistics gather_step_statistics() const;
   void write_summary_row(const StepStatistics& stats, unsigned int iterations, double axial,
-                         const dealii::Utilities::MPI::MinMaxAvg& rve_seconds);
+                         const dealii::Utilities::MPI::MinMaxAvg& rve_seconds, double loop_seconds);
   void write_vtu(const StepStatistics& stats);
   /// External forces with the reactions of the constrained dofs (energy_balance.h).
   dealii::Vector<double> external_with_reactions() const;

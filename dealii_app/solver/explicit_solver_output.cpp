@@ -28,13 +28,14 @@ void ExplicitSolver<dim>::output_step(unsigned int iterations)
   // Load balance: RVE seconds of the busiest and of the mean rank (collective).
   const Utilities::MPI::MinMaxAvg rve_seconds =
     Utilities::MPI::min_max_avg(cost_in_step_.seconds, MPI_COMM_WORLD);
+  const double loop_seconds = Utilities::MPI::min_max_avg(cost_in_step_.loop_seconds, MPI_COMM_WORLD).avg;
   // Rank 0 writes; a failure (e.g. a full disk) stops every rank, not only it.
   std::string problem;
   if (rank_ == 0)
     try
     {
       history_file_->append(static_cast<int>(step_), axial, stats.records);
-      write_summary_row(stats, iterations, axial, rve_seconds);
+      write_summary_row(stats, iterations, axial, rve_seconds, loop_seconds);
       write_vtu(stats);
       write_ip_points<dim>(prm_.output_directory, static_cast<int>(step_), ip_positions(), stats.records);
     }
@@ -134,7 +135,8 @@ typename ExplicitSolver<dim>::StepStatistics ExplicitSolver<dim>::gather_step_st
 template <int dim>
 void ExplicitSolver<dim>::write_summary_row(const StepStatistics& st, unsigned int iterations,
                                             double axial,
-                                            const Utilities::MPI::MinMaxAvg& rve_seconds)
+                                            const Utilities::MPI::MinMaxAvg& rve_seconds,
+                                            double loop_seconds)
 {
   const double wall = MPI_Wtime() - t_start_;
   std::ostringstream row;
@@ -148,7 +150,7 @@ void ExplicitSolver<dim>::write_summary_row(const StepStatistics& st, unsigned i
       << ',' << rve_seconds.max << ',' << rve_seconds.avg;
   if (dim == 3) // new columns go at the end (architecture.md)
     row << ',' << st.s33_mean;
-  row << '\n';
+  row << ',' << loop_seconds << '\n';
   summary_rows_ += row.str();
   summary_ << row.str() << std::flush;
   pcout_ << "stage " << stage_ << " step " << std::setw(3) << step_ << "  axial strain "

@@ -26,9 +26,11 @@ struct EvaluationCost
   long solves = 0;      ///< RVE solves (skipped ones not counted)
   long unconverged = 0; ///< bounded solves that stopped at their step limit
   double seconds = 0.0; ///< this rank's wall seconds in RVE solves
+  double loop_seconds = 0.0; ///< of them, the seconds inside the DEM time-step loops
   EvaluationCost& operator+=(const EvaluationCost& c)
   {
     dem_steps += c.dem_steps, solves += c.solves, unconverged += c.unconverged, seconds += c.seconds;
+    loop_seconds += c.loop_seconds;
     return *this;
   }
 };

@@ -54,6 +54,7 @@ EvaluationCost RveMaterial<dim>::evaluate(std::vector<IpState<dim>>& points)
     cost.unconverged += !r[p].converged;
   }
   cost.seconds = pool_->last_local_seconds();
+  cost.loop_seconds = pool_->last_local_loop_seconds();
   return cost;
 }
 

@@ -13,7 +13,8 @@
 #   skip1e-5), mtsN (check10 + multiple time stepping: at most N DEM steps
 #   per RVE and DR iteration until (M9) first holds, e.g. mts50); a suffix
 #   +incremental on any of them adds 'Frequency estimate = incremental' of
-#   dynamic relaxation (e.g. mts20+incremental).
+#   dynamic relaxation (e.g. mts20+incremental), and +dtT the RVE's 'Time
+#   step' T (e.g. mts20+incremental+dt2e-6).
 #   Default: the first six.
 # ACCEL_WORKDIR=DIR keeps each run in DIR/MESH_SETTING with a checkpoint
 # after every load step, and a later call with the same DIR resumes it
@@ -33,6 +34,7 @@ overrides() {
   case $1 in
     *+incremental) overrides "${1%+incremental}"
       printf 'subsection Dynamic relaxation\n  set Frequency estimate = incremental\nend\n' ;;
+    *+dt*) overrides "${1%+dt*}"; printf 'subsection RVE\n  set Time step = %s\nend\n' "${1##*+dt}" ;;
     strict) printf 'subsection Material\n  set History = committed\n  set Skip tolerance = 0\nend\n' ;;
     warm) printf 'subsection Material\n  set History = continuous\n  set Skip tolerance = 0\nend\n' ;;
     skip*) printf 'subsection Material\n  set History = continuous\n  set Skip tolerance = %s\nend\n' "${1#skip}" ;;

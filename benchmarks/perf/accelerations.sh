@@ -44,6 +44,14 @@ overrides() {
     *) echo "unknown setting '$1'" >&2; exit 2 ;;
   esac
 }
+# A mesh without its own example (e.g. 4x8): the 2x4 example with its cells.
+prm="$root/dealii_app/examples/biaxial_$mesh.prm"
+if [[ ! -f $prm ]]; then
+  [[ $mesh =~ ^([0-9]+)x([0-9]+)$ ]] || { echo "accelerations.sh: MESH must be CxR, e.g. 4x8 (got '$mesh')" >&2; exit 2; }
+  prm="$(mktemp)"
+  { cat "$root/dealii_app/examples/biaxial_2x4.prm"
+    printf 'subsection Geometry\n  set Cells x = %s\n  set Cells y = %s\nend\n' "${BASH_REMATCH[1]}" "${BASH_REMATCH[2]}"; } > "$prm"
+fi
 mkdir -p "$here/results"
 for s in "${settings[@]}"; do
   if [[ -n "${ACCEL_WORKDIR:-}" ]]; then
@@ -60,7 +68,7 @@ for s in "${settings[@]}"; do
     : > "$log"
   fi
   { sed "s#^set Output directory.*#set Output directory = $work/out#; s#\.\./\.\./rve_templates#$root/rve_templates#" \
-      "$root/dealii_app/examples/biaxial_$mesh.prm"; overrides "$s"
+      "$prm"; overrides "$s"
     [[ -z "${ACCEL_WORKDIR:-}" ]] || printf 'subsection Checkpoint\n  set Every = 1\nend\n'; } > "$work/case.prm"
   start=$(date +%s.%N) from=$(( $(wc -l < "$log") + 1 ))
   status=completed

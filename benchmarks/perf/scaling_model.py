@@ -12,18 +12,22 @@ Per iteration, every rank
 T(P) = t_macro + ceil(N_IP / P) * t_solve * b(P) + t_gather(P);
 efficiency E(P) = T(1) / (P T(P)).
 
-b(P): with many RVEs per rank the rebalance (by measured cost, after every
-load step) evens the sums out (b = measured max/mean of the 2x4 run on 2
-ranks); with one RVE per rank, an iteration waits for its slowest solve.
-Under multiple time stepping (mts N) a solve stops after N DEM steps until
-(M9) first holds, so b <= N / (mean DEM steps per solve); that bound is used
-for N_IP / P <= 2, the measured b for >= 16, and a linear blend in between.
+b(k), k = RVEs per rank: an iteration waits for its slowest rank. With
+sums of k solves per rank the relative spread falls as 1/sqrt(k):
+b(k) = 1 + (b1 - 1) / sqrt(k). Two values of b1 bound the estimate:
+  - optimistic: b1 = 1 + 4 (m - 1) from m, the measured max/mean of the
+    ranks' RVE seconds of the 2x4 run (k = 16);
+  - pessimistic: b1 = max/mean over IPs of the DEM steps of each step's
+    last solve (history.h5), pooled over steps: the last, unbounded solves
+    of a step are the most uneven ones, and the bound applies that spread
+    to every solve.
 Rebalancing itself moves an RVE's restart image (~73 kB for lbs_ref) once
 per load step, i.e. once in hundreds of iterations: left out.
 
-Usage: scaling_model.py SUMMARY_2x4_2RANKS MACRO_COST_CSV [MTS_CAP] [BARE_US_PER_STEP] [T_SOLVE_3D]
+Usage: scaling_model.py SUMMARY_2x4_2RANKS HISTORY_H5 MACRO_COST_CSV [BARE_US_PER_STEP] [T_SOLVE_3D]
   SUMMARY_2x4_2RANKS: summary.csv of a 2x4 run on 2 ranks (rve_solves,
-  rve_rank_max_s, rve_rank_mean_s, dem_steps, macro_iterations)
+  rve_rank_max_s, rve_rank_mean_s, dem_steps, macro_iterations);
+  HISTORY_H5: that run's history.h5 (per-IP DEM steps of each step's last solve)
   MACRO_COST_CSV: results_macro_cost.csv (seconds per iteration by cells, 2D and 3D)
   BARE_US_PER_STEP: bare LIGGGHTS microseconds per DEM step of lbs_ref
   (overhead.sh), for a second view of the share of RVE time in DEM steps
@@ -36,22 +40,24 @@ import csv
 import math
 import sys
 
+import h5py
+
 summary = list(csv.DictReader(open(sys.argv[1])))
-cost_rows = list(csv.DictReader(open(sys.argv[2])))
-cap = float(sys.argv[3]) if len(sys.argv) > 3 else 20.0
+last_solve_steps = h5py.File(sys.argv[2], "r")["dem_steps"][()]  # load steps x IPs
+cost_rows = list(csv.DictReader(open(sys.argv[3])))
 bare_us = float(sys.argv[4]) if len(sys.argv) > 4 else 18.1
+t_solve_3d = float(sys.argv[5]) if len(sys.argv) > 5 else 9.2e-3  # cost_3d.sh: small_3d solve
 
 ranks = 2
 solves = sum(int(r["rve_solves"]) for r in summary)
 steps = sum(int(r["dem_steps"]) for r in summary)
 iterations = sum(int(r["macro_iterations"]) for r in summary)
 rve_seconds = ranks * sum(float(r["rve_rank_mean_s"]) for r in summary)
+loop = ranks * sum(float(r.get("rve_loop_mean_s") or "nan") for r in summary)
 imbalance = sum(float(r["rve_rank_max_s"]) for r in summary) / sum(float(r["rve_rank_mean_s"]) for r in summary)
 t_solve = rve_seconds / solves
-steps_per_solve = steps / solves
-b_single = max(1.0, cap / steps_per_solve)
-share = steps * bare_us * 1e-6 / rve_seconds
-loop = ranks * sum(float(r.get("rve_loop_mean_s") or "nan") for r in summary)
+b1_optimistic = 1.0 + 4.0 * (imbalance - 1.0)
+b1_pessimistic = last_solve_steps.max(axis=1).sum() / last_solve_steps.mean(axis=1).sum()
 
 
 def per_cell(dim, quadrature):
@@ -60,45 +66,43 @@ def per_cell(dim, quadrature):
     return float(big["s_per_iteration"]) / int(big["cells"]), int(big["cells"])
 
 
-c2, n2 = per_cell(2, "full")        # [LBS]: 2x2 Gauss points
-c3, n3 = per_cell(3, "one point")   # [LSYF]: one point per hexahedron, hourglass control
+c2, n2 = per_cell(2, "full")  # [LBS]: 2x2 Gauss points
+c3, n3 = per_cell(3, "one point")  # [LSYF]: one point per hexahedron, hourglass control
 alpha, beta = 2e-6, 10e9  # assumed: InfiniBand-class latency [s] and bandwidth [B/s]
 doubles = {2: 33, 3: 58}  # RveResponse<dim>::packed_size() + the pool's 2 (rve_pool.cpp)
 
 print(f"input t_solve {t_solve * 1e6:.1f} us per RVE solve (2x4 run: {solves} solves, {rve_seconds:.1f} RVE s)")
-print(f"input dem_steps_per_solve {steps_per_solve:.2f} steps")
-print(f"input loop_share_of_rve_time {loop / rve_seconds:.3f} 1 (rve_loop_mean_s / rve_rank_mean_s: inside LIGGGHTS' time-step loop)")
-print(f"input bare_equivalent_share {share:.3f} 1 (DEM steps x {bare_us} us of bare LIGGGHTS on the unloaded packing / RVE seconds)")
-print(f"input imbalance_many_rves_per_rank {imbalance:.3f} 1 (2x4 run, 16 RVEs per rank)")
-print(f"input imbalance_one_rve_per_rank_bound {b_single:.3f} 1 (cap {cap:g} / {steps_per_solve:.2f} steps)")
-print(f"input macro_s_per_iteration_per_cell_2d {c2:.3e} s (neo-Hookean, 2x2 Gauss, measured on {n2} cells)")
-print(f"input macro_s_per_iteration_per_cell_3d {c3:.3e} s (neo-Hookean, one point, measured on {n3} cells)")
-print(f"input iterations {iterations} (2x4 run); network alpha {alpha:g} s, beta {beta:g} B/s (assumed)")
+print(f"input dem_steps_per_solve {steps / solves:.2f} steps")
+print(f"input loop_share_of_rve_time {loop / rve_seconds:.3f} 1 (rve_loop_mean_s / rve_rank_mean_s)")
+print(f"input bare_equivalent_share {steps * bare_us * 1e-6 / rve_seconds:.3f} 1 "
+      f"(DEM steps x {bare_us} us of bare LIGGGHTS on the unloaded packing / RVE seconds)")
+print(f"input imbalance_16_rves_per_rank {imbalance:.3f} 1 (2x4 run, max/mean of the ranks' RVE seconds)")
+print(f"input b1_optimistic {b1_optimistic:.3f} 1")
+print(f"input b1_pessimistic {b1_pessimistic:.3f} 1 (pooled max/mean over IPs of the last solve's DEM steps)")
+print(f"input macro_s_per_iteration_per_cell_2d {c2:.3e} s (neo-Hookean, 2x2 Gauss, {n2} cells)")
+print(f"input macro_s_per_iteration_per_cell_3d {c3:.3e} s (neo-Hookean, one point, {n3} cells)")
+print(f"input t_solve_3d {t_solve_3d:.3e} s; network alpha {alpha:g} s, beta {beta:g} B/s (assumed)")
 
 
-def efficiency(dim, cells, ips, P, t_rve):
-    def T(p):
-        per_rank = math.ceil(ips / p)
-        w = min(1.0, max(0.0, (per_rank - 2) / 14.0))  # 0 at <= 2 RVEs per rank, 1 at >= 16
-        b = (1 - w) * b_single + w * imbalance if p > 1 else 1.0
-        gather = (alpha * math.log2(p) + ips * 8 * doubles[dim] / beta) if p > 1 else 0.0
-        return (c2 if dim == 2 else c3) * cells + per_rank * t_rve * b + gather
-
-    return T(1) / (P * T(P)), T(P)
+def seconds(dim, cells, ips, p, t_rve, b1):
+    k = math.ceil(ips / p)
+    b = 1.0 + (b1 - 1.0) / math.sqrt(k) if p > 1 else 1.0
+    gather = (alpha * math.log2(p) + ips * 8 * doubles[dim] / beta) if p > 1 else 0.0
+    return (c2 if dim == 2 else c3) * cells + k * t_rve * b + gather
 
 
 cases = [("[LBS] 8x16, 2x2 Gauss (2D)", 2, 128, 512, t_solve),
          ("[LBS] 16x32, 2x2 Gauss (2D)", 2, 512, 2048, t_solve),
-         ("3D 16x16x16, one point", 3, 4096, 4096, None),
-         ("3D 32x32x32, one point", 3, 32768, 32768, None)]
-t_solve_3d = float(sys.argv[5]) if len(sys.argv) > 5 else 9.2e-3  # cost_3d.sh: lsyf-like small_3d solve
+         ("3D 16x16x16, one point", 3, 4096, 4096, t_solve_3d),
+         ("3D 32x32x32, one point", 3, 32768, 32768, t_solve_3d)]
 print()
-print("| mesh | IPs | P | RVEs per rank | seconds per iteration | efficiency |")
+print("| mesh | IPs | P | RVEs per rank | seconds per iteration | efficiency (pessimistic - optimistic) |")
 print("|---|---|---|---|---|---|")
 for name, dim, cells, ips, t in cases:
-    t = t if t is not None else t_solve_3d
+    t1 = seconds(dim, cells, ips, 1, t, 1.0)
     for P in (64, 128, 256, 512, 1024):
         if P > ips:
             continue
-        e, tp = efficiency(dim, cells, ips, P, t)
-        print(f"| {name} | {ips} | {P} | {math.ceil(ips / P)} | {tp:.3g} | {e:.2f} |")
+        worst, best = (seconds(dim, cells, ips, P, t, b1) for b1 in (b1_pessimistic, b1_optimistic))
+        print(f"| {name} | {ips} | {P} | {math.ceil(ips / P)} | {best:.3g} - {worst:.3g} | "
+              f"{t1 / (P * worst):.2f} - {t1 / (P * best):.2f} |")

@@ -10,6 +10,7 @@
 set -uo pipefail
 exe=$1 prm=$2 work=$3 reference=$4 mode=$5
 tests=$(cd "$(dirname "$0")" && pwd)
+. "$tests/lib.sh"
 fail() { echo "FAIL: $*"; exit 1; }
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
 template=$(sed -n 's/^ *set Template *= *//p' "$prm" | head -n 1)
@@ -19,7 +20,7 @@ cp "$template" template.liggghts
   printf '\nsubsection RVE\n  set Template = %s\nend\nsubsection Checkpoint\n  set Every = 1\n  set Keep = 2\nend\n' "$work/template.liggghts"
 } > case.prm
 "$exe" case.prm > stopped.log 2>&1 & pid=$!
-for _ in $(seq 1200); do [[ -f out/summary.csv && $(wc -l < out/summary.csv) -ge 4 ]] && break; sleep 0.05; done
+wait_for_rows out/summary.csv 4
 kill -TERM $pid; wait $pid || fail "the run did not stop cleanly: $(tail -n 3 stopped.log)"
 mapfile -t kept < <(ls out/checkpoints/checkpoint-*.h5 | sort)
 [[ ${#kept[@]} -eq 2 ]] || fail "expected 2 checkpoints, found ${kept[*]}"

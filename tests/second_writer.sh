@@ -7,11 +7,12 @@
 set -uo pipefail
 exe=$1 prm=$2 work=$3 reference=$4
 tests=$(cd "$(dirname "$0")" && pwd)
+. "$tests/lib.sh"
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
 sed 's#^set Output directory.*#set Output directory = out#' "$prm" > case.prm
 fail() { echo "FAIL: $*"; exit 1; }
 "$exe" case.prm > first.log 2>&1 & first=$!
-for _ in $(seq 1200); do [[ -f out/summary.csv && $(wc -l < out/summary.csv) -ge 2 ]] && break; sleep 0.05; done
+wait_for_rows out/summary.csv 2
 kill -0 $first 2> /dev/null || fail "the first run ended before the second one started"
 # Paused while the others try (however slow the machine), then resumed: it
 # must still end as if undisturbed.

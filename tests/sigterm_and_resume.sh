@@ -7,6 +7,7 @@
 set -uo pipefail
 exe=$1 prm=$2 work=$3 reference=$4 np=$5 signal=$6
 tests=$(cd "$(dirname "$0")" && pwd)
+. "$tests/lib.sh"
 run() { if [[ $np -eq 1 ]]; then "$exe" "$@"; else mpiexec --allow-run-as-root --oversubscribe -np "$np" "$exe" "$@"; fi; }
 rm -rf "$work"; mkdir -p "$work"
 { sed 's#^set Output directory.*#set Output directory = out#' "$prm"
@@ -18,10 +19,7 @@ else mpiexec --allow-run-as-root --oversubscribe -np "$np" "$exe" case.prm > sto
 fi
 pid=$!
 # Signal during load step 3 (after step 2's row).
-for _ in $(seq 1200); do
-  [[ -f out/summary.csv && $(wc -l < out/summary.csv) -ge 3 ]] && break
-  sleep 0.05
-done
+wait_for_rows out/summary.csv 3
 sleep 0.2
 kill -"$signal" $pid
 wait $pid; rc=$?

@@ -10,6 +10,7 @@
 set -uo pipefail
 exe=$1 prm=$2 work=$3 reference=$4 script=$5
 tests=$(cd "$(dirname "$0")" && pwd)
+. "$tests/lib.sh"
 fail() { echo "FAIL: $*"; exit 1; }
 rm -rf "$work"; mkdir -p "$work/bin"; cd "$work"
 cat > bin/srun <<'STUB'
@@ -24,10 +25,7 @@ chmod +x bin/srun bin/scontrol
 export PATH="$work/bin:$PATH" FE2DEM="$exe" SLURM_JOB_ID=42
 SLURM_NTASKS=2 SLURM_RESTART_COUNT=0 bash "$script" case.prm > job-0.log 2>&1 &
 job=$!
-for _ in $(seq 1200); do
-  [[ -f out/summary.csv && $(wc -l < out/summary.csv) -ge 3 ]] && break
-  sleep 0.05
-done
+wait_for_rows out/summary.csv 3
 sleep 0.2
 kill -USR1 $job
 wait $job; rc=$?

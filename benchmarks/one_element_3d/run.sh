@@ -9,8 +9,11 @@
 set -uo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 build="$(realpath -m "$1")" out="$(realpath -m "$2")"
-suffix=""
-[[ "${3:-}" == small_3d ]] && suffix="_small_3d"
+case "${3:-}" in
+  "") suffix="" ;;
+  small_3d) suffix="_small_3d" ;;
+  *) echo "run.sh: unknown set-up '$3' (known: small_3d, or none for lsyf_1000)" >&2; exit 2 ;;
+esac
 mkdir -p "$out"
 sed "s#^set Output directory.*#set Output directory = $out/macro#; s#\.\./\.\./rve_templates#$here/../../rve_templates#" \
   "$here/macro$suffix.prm" > "$out/macro.prm"

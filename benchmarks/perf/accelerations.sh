@@ -13,8 +13,12 @@
 #   skip1e-5), mtsN (check10 + multiple time stepping: at most N DEM steps
 #   per RVE and DR iteration until (M9) first holds, e.g. mts50); a suffix
 #   +incremental on any of them adds 'Frequency estimate = incremental' of
-#   dynamic relaxation (e.g. mts20+incremental), and +dtT the RVE's 'Time
-#   step' T (e.g. mts20+incremental+dt2e-6).
+#   dynamic relaxation (e.g. mts20+incremental), +dtT the RVE's 'Time
+#   step' T (e.g. mts20+incremental+dt2e-6), +sfG dynamic relaxation's
+#   'Safety factor' G, +xiX its 'Damping ratio' X, +tolE its 'Kinetic
+#   energy tolerance' E, +rampN its 'Ramp iterations' N (e.g.
+#   mts50+incremental+sf0.9), and +early ends the run after the first two
+#   axial steps (1 %: the start of the curve, where the DR transients show).
 #   Default: the first six.
 # ACCEL_WORKDIR=DIR keeps each run in DIR/MESH_SETTING with a checkpoint
 # after every load step, and a later call with the same DIR resumes it
@@ -32,9 +36,17 @@ read -r -a settings <<<"${settings[*]}"
 source "$root/benchmarks/common.sh"
 overrides() {
   case $1 in
-    *+incremental) overrides "${1%+incremental}"
-      printf 'subsection Dynamic relaxation\n  set Frequency estimate = incremental\nend\n' ;;
-    *+dt*) overrides "${1%+dt*}"; printf 'subsection RVE\n  set Time step = %s\nend\n' "${1##*+dt}" ;;
+    *+*) overrides "${1%+*}"  # the last suffix
+      case ${1##*+} in
+        incremental) printf 'subsection Dynamic relaxation\n  set Frequency estimate = incremental\nend\n' ;;
+        dt*) printf 'subsection RVE\n  set Time step = %s\nend\n' "${1##*+dt}" ;;
+        sf*) printf 'subsection Dynamic relaxation\n  set Safety factor = %s\nend\n' "${1##*+sf}" ;;
+        xi*) printf 'subsection Dynamic relaxation\n  set Damping ratio = %s\nend\n' "${1##*+xi}" ;;
+        tol*) printf 'subsection Dynamic relaxation\n  set Kinetic energy tolerance = %s\nend\n' "${1##*+tol}" ;;
+        ramp*) printf 'subsection Dynamic relaxation\n  set Ramp iterations = %s\nend\n' "${1##*+ramp}" ;;
+        early) printf 'subsection Loading\n  set Load steps = 2\n  set Axial strain = 0.01\nend\n' ;;
+        *) echo "unknown suffix '+${1##*+}' of setting '$1'" >&2; exit 2 ;;
+      esac ;;
     strict) printf 'subsection Material\n  set History = committed\n  set Skip tolerance = 0\nend\n' ;;
     warm) printf 'subsection Material\n  set History = continuous\n  set Skip tolerance = 0\nend\n' ;;
     skip*) printf 'subsection Material\n  set History = continuous\n  set Skip tolerance = %s\nend\n' "${1#skip}" ;;
@@ -49,6 +61,7 @@ prm="$root/dealii_app/examples/biaxial_$mesh.prm"
 if [[ ! -f $prm ]]; then
   [[ $mesh =~ ^([0-9]+)x([0-9]+)$ ]] || { echo "accelerations.sh: MESH must be CxR, e.g. 4x8 (got '$mesh')" >&2; exit 2; }
   prm="$(mktemp)"
+  trap 'rm -f "$prm"' EXIT
   { cat "$root/dealii_app/examples/biaxial_2x4.prm"
     printf 'subsection Geometry\n  set Cells x = %s\n  set Cells y = %s\nend\n' "${BASH_REMATCH[1]}" "${BASH_REMATCH[2]}"; } > "$prm"
 fi

@@ -155,7 +155,7 @@ void ExplicitSolver<dim>::open_output_files(const std::string& checkpoint)
               "sigma11_mean,sigma22_mean,J_rel_mean,coordination_mean,anisotropy_mean,"
               "macro_iterations,dem_steps,wall_s,top_force,affine_deviation,rve_solves,"
               "rve_rank_max_s,rve_rank_mean_s"
-           << (dim == 3 ? ",sigma33_mean" : "") << ",rve_loop_mean_s\n"
+           << (dim == 3 ? ",sigma33_mean" : "") << ",rve_loop_mean_s,rve_iteration_max_s\n"
            << summary_rows_ << std::flush;
   const std::string energy = prm_.output_directory + "/energy.csv";
   energy_csv_.open(energy);

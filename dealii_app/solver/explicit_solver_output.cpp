@@ -150,7 +150,7 @@ void ExplicitSolver<dim>::write_summary_row(const StepStatistics& st, unsigned i
       << ',' << rve_seconds.max << ',' << rve_seconds.avg;
   if (dim == 3) // new columns go at the end (architecture.md)
     row << ',' << st.s33_mean;
-  row << ',' << loop_seconds << '\n';
+  row << ',' << loop_seconds << ',' << cost_in_step_.busiest_seconds << '\n';
   summary_rows_ += row.str();
   summary_ << row.str() << std::flush;
   pcout_ << "stage " << stage_ << " step " << std::setw(3) << step_ << "  axial strain "

@@ -161,7 +161,11 @@ void DynamicRelaxation::declare_parameters(dealii::ParameterHandler& prm)
                     "quotient is not positive, and the first iteration of a load step uses the "
                     "secant one.");
   prm.declare_entry("Damping ratio", "1.0", Double(0.0), "xi of (M7)/(M8).");
-  prm.declare_entry("Safety factor", "0.5", Double(0.0, 1.0), "gamma of (M8), < 1.");
+  prm.declare_entry("Safety factor", "0.5", Double(0.0, 1.0),
+                    "gamma of (M8), < 1. With RVEs and continuous history a larger value "
+                    "relaxes in fewer iterations, but the RVEs keep the larger pseudo-dynamic "
+                    "excursions: with 0.9 the start of the 4x8 [LBS] curve falls by up to 21 % "
+                    "(benchmarks/perf/README.md).");
   prm.declare_entry("Kinetic energy tolerance", "1e-3", Double(0.0),
                     "tol of (M9): a load step has converged when E_kin <= tol * max E_kin of "
                     "the step (after the peak).");

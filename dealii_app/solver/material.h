@@ -27,10 +27,14 @@ struct EvaluationCost
   long unconverged = 0; ///< bounded solves that stopped at their step limit
   double seconds = 0.0; ///< this rank's wall seconds in RVE solves
   double loop_seconds = 0.0; ///< of them, the seconds inside the DEM time-step loops
+  /// The busiest rank's RVE seconds of each evaluate(), summed (the same on
+  /// every rank): the wall time RVE solves cost when every iteration waits
+  /// for its slowest rank, against `seconds` of the mean rank.
+  double busiest_seconds = 0.0;
   EvaluationCost& operator+=(const EvaluationCost& c)
   {
     dem_steps += c.dem_steps, solves += c.solves, unconverged += c.unconverged, seconds += c.seconds;
-    loop_seconds += c.loop_seconds;
+    loop_seconds += c.loop_seconds, busiest_seconds += c.busiest_seconds;
     return *this;
   }
 };

@@ -1,5 +1,9 @@
 #include "rve_material.h"
 
+#include <deal.II/base/mpi.h>
+
+#include <mpi.h>
+
 #include <cmath>
 
 namespace fe2dem::macro
@@ -55,6 +59,7 @@ EvaluationCost RveMaterial<dim>::evaluate(std::vector<IpState<dim>>& points)
   }
   cost.seconds = pool_->last_local_seconds();
   cost.loop_seconds = pool_->last_local_loop_seconds();
+  cost.busiest_seconds = dealii::Utilities::MPI::max(cost.seconds, MPI_COMM_WORLD); // collective, as solve()
   return cost;
 }
 

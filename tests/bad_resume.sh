@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# --resume refuses what it cannot continue: no checkpoint yet, or a
-# checkpoint written with other parameters (named in the message).
+# --resume refuses what it cannot continue: no checkpoint yet, a
+# checkpoint written with other parameters (named in the message), or one
+# of an older checkpoint format (its summary rows have fewer columns).
 # Usage: bad_resume.sh FE2DEM PRM WORKDIR
 set -uo pipefail
 exe=$1 prm=$2 work=$3
@@ -23,4 +24,27 @@ for n in "other parameters" "Loading/Axial strain" "0.02" "0.03" "other.prm"; do
   grep -qF -- "$n" <<<"$out" || fail "message lacks '$n'"
 done
 cmp -s out/summary.csv finished.csv || fail "the refused resume changed summary.csv"
-echo "ok: both refused with exit code != 0, the finished run's files untouched"
+# Every kept checkpoint made one format older, with its fingerprint (FNV-1a
+# and size, file_hash.cpp) written again, as an earlier fe2dem would have;
+# otherwise it counts as damaged and the one before is tried.
+newest=$(ls out/checkpoints/checkpoint-*.h5 | sort | tail -n 1)
+for f in out/checkpoints/checkpoint-*.h5; do
+  /usr/bin/python3 - "$f" <<'PY' || fail "could not age $f"
+import sys, h5py
+path = sys.argv[1]
+with h5py.File(path, "r+") as f:
+    f.attrs["format"] = f.attrs["format"] - 1
+data = open(path, "rb").read()
+h = 14695981039346656037
+for b in data:
+    h = ((h ^ b) * 1099511628211) & 0xFFFFFFFFFFFFFFFF
+open(path + ".fnv", "w").write(f"{h:016x} {len(data)}\n")
+PY
+done
+out=$("$exe" case.prm --resume 2>&1) && fail "--resume of an older checkpoint format exited 0"
+echo "$out" | tail -n 2
+for n in "$newest" "has format" "earlier fe2dem" "without --resume"; do
+  grep -qF -- "$n" <<<"$out" || fail "message lacks '$n'"
+done
+cmp -s out/summary.csv finished.csv || fail "the refused resume changed summary.csv"
+echo "ok: all three refused with exit code != 0, the finished run's files untouched"

@@ -20,8 +20,10 @@ namespace
 {
 // 1: IP state F, P, fabric, F_last_step, J_ic, coordination, anisotropy,
 //    DEM steps, servo iterations; 2: IpState::pack() (every RVE statistic);
-// 3: energy.csv rows, the energy balance and the state of explicit dynamics.
-constexpr int format_version = 3;
+// 3: energy.csv rows, the energy balance and the state of explicit dynamics;
+// 4: summary rows with the column rve_iteration_max_s (a resumed run writes
+//    the checkpoint's rows first, so they must have the columns of this one).
+constexpr int format_version = 4;
 
 void check(herr_t status, const std::string& what, const std::string& file)
 {
@@ -185,8 +187,8 @@ CheckpointData read_checkpoint(const std::string& file)
       throw std::runtime_error(
         "checkpoint '" + file + "' has format " + std::to_string(format) + ", this fe2dem reads format " +
         std::to_string(format_version) +
-        (format < format_version ? " (it was written by an earlier fe2dem, before checkpoints "
-                                   "held the energy balance): finish that run with the fe2dem "
+        (format < format_version ? " (it was written by an earlier fe2dem, whose summary.csv "
+                                   "and checkpoints hold less): finish that run with the fe2dem "
                                    "that started it, or start it again without --resume"
                                  : " (it was written by a newer fe2dem): resume with that one"));
     d.step = read_attribute<int>(h, "step", H5T_NATIVE_INT, file);

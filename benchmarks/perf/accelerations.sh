@@ -17,7 +17,9 @@
 #   step' T (e.g. mts20+incremental+dt2e-6), +sfG dynamic relaxation's
 #   'Safety factor' G, +xiX its 'Damping ratio' X, +tolE its 'Kinetic
 #   energy tolerance' E, +rampN its 'Ramp iterations' N (e.g.
-#   mts50+incremental+sf0.9), and +early ends the run after the first two
+#   mts50+incremental+sf0.9), +extrap its 'Predictor = extrapolate',
+#   +affine the RVE's 'Inner start = affine' (e.g.
+#   mts50+incremental+extrap+affine), and +early ends the run after the first two
 #   axial steps (1 %: the start of the curve, where the DR transients show).
 #   Default: the first six.
 # ACCEL_WORKDIR=DIR keeps each run in DIR/MESH_SETTING with a checkpoint
@@ -44,6 +46,8 @@ overrides() {
         xi*) printf 'subsection Dynamic relaxation\n  set Damping ratio = %s\nend\n' "${1##*+xi}" ;;
         tol*) printf 'subsection Dynamic relaxation\n  set Kinetic energy tolerance = %s\nend\n' "${1##*+tol}" ;;
         ramp*) printf 'subsection Dynamic relaxation\n  set Ramp iterations = %s\nend\n' "${1##*+ramp}" ;;
+        extrap) printf 'subsection Dynamic relaxation\n  set Predictor = extrapolate\nend\n' ;;
+        affine) printf 'subsection RVE\n  set Inner start = affine\nend\n' ;;
         early) printf 'subsection Loading\n  set Load steps = 2\n  set Axial strain = 0.01\nend\n' ;;
         *) echo "unknown suffix '+${1##*+}' of setting '$1'" >&2; exit 2 ;;
       esac ;;

@@ -23,7 +23,7 @@ namespace
 // 3: energy.csv rows, the energy balance and the state of explicit dynamics;
 // 4: summary rows with the column rve_iteration_max_s (a resumed run writes
 //    the checkpoint's rows first, so they must have the columns of this one).
-constexpr int format_version = 4;
+constexpr int format_version = 5;
 
 void check(herr_t status, const std::string& what, const std::string& file)
 {
@@ -130,6 +130,7 @@ void write_checkpoint(const std::string& file, const CheckpointData& d,
     write_attribute(h, "h_ic", H5T_NATIVE_DOUBLE, d.h_ic, tmp);
     write_attribute(h, "wall_seconds", H5T_NATIVE_DOUBLE, d.wall_seconds, tmp);
     write_bytes(h, "displacement", H5T_NATIVE_DOUBLE, d.displacement.data(), {d.displacement.size()}, tmp);
+    write_bytes(h, "step_increment", H5T_NATIVE_DOUBLE, d.step_increment.data(), {d.step_increment.size()}, tmp);
     const hsize_t n_ip = d.ip_state_width ? d.ip_state.size() / d.ip_state_width : 0;
     write_bytes(h, "ip_state", H5T_NATIVE_DOUBLE, d.ip_state.data(), {n_ip, d.ip_state_width}, tmp);
     write_string(h, "summary_rows", d.summary_rows, tmp);
@@ -198,6 +199,7 @@ CheckpointData read_checkpoint(const std::string& file)
     d.h_ic = read_attribute<double>(h, "h_ic", H5T_NATIVE_DOUBLE, file);
     d.wall_seconds = read_attribute<double>(h, "wall_seconds", H5T_NATIVE_DOUBLE, file);
     d.displacement = read_vector<double>(h, "displacement", H5T_NATIVE_DOUBLE, file);
+    d.step_increment = read_vector<double>(h, "step_increment", H5T_NATIVE_DOUBLE, file);
     hid_t set = H5Dopen2(h, "ip_state", H5P_DEFAULT);
     hid_t space = H5Dget_space(set);
     hsize_t dims[2] = {0, 0};

@@ -6,7 +6,8 @@
  * a file with the final name is always whole.
  *
  * Layout: attributes format, step, stage, step_in_stage, u_top_ic, h_ic,
- * wall_seconds; datasets /displacement [n_dofs], /ip_state [n_ip][n],
+ * wall_seconds; datasets /displacement and /step_increment (the last load
+ * step's change, for 'Predictor = extrapolate') [n_dofs], /ip_state [n_ip][n],
  * /summary_rows, /energy_rows and /parameters (strings), /energy_state
  * (EnergyBalance::pack()), /dynamics_state (t, v, a, f_int; empty when
  * quasi-static), /rve/NNNNNN (committed state of
@@ -30,6 +31,7 @@ struct CheckpointData
   double u_top_ic = 0.0, h_ic = 0.0;          ///< biaxial reference after stage 1
   double wall_seconds = 0.0;                  ///< wall time of the run so far
   std::vector<double> displacement;           ///< nodal displacements, dof order
+  std::vector<double> step_increment;         ///< their change over the last load step, dof order
   std::size_t ip_state_width = 0;
   std::vector<double> ip_state;               ///< per IP, ip_state_width values
   std::string summary_rows;                   ///< summary.csv rows so far (no header)

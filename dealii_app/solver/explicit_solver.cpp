@@ -264,7 +264,7 @@ void ExplicitSolver<dim>::setup_system()
   const unsigned int n = dof_handler_.n_dofs();
   dof_map_.reinit(dof_handler_);
   for (auto* v : {&mass_, &displacement_, &velocity_, &f_int_, &f_ext_, &f_hourglass_, &acceleration_,
-                  &f_int_previous_})
+                  &f_int_previous_, &step_increment_})
     v->reinit(n);
   ip_.resize(triangulation_.n_active_cells() * quadrature_.size());
   FEValues<dim> fe_values(fe_, quadrature_, update_quadrature_points);
@@ -419,6 +419,8 @@ unsigned int ExplicitSolver<dim>::relax_load_step(const double fraction_begin)
     return it >= ramp ? fraction_end : fraction_begin + (fraction_end - fraction_begin) * it / ramp;
   };
   velocity_ = 0.0;
+  if (dr.predictor == DynamicRelaxation::Predictor::extrapolate && step_in_stage_ > 1)
+    displacement_.add((fraction_end - fraction_begin) * load_case_->steps_in_stage(stage_), step_increment_);
   apply_boundary_values(fraction_at(1));
   integrator_->start();
   const unsigned int max_bounded = 1000;

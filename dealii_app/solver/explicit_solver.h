@@ -66,6 +66,7 @@ private:
     unsigned int stage = 1, step_in_stage = 0, step = 0;
     typename LoadCase<dim>::Reference reference;
     dealii::Vector<double> displacement;
+    dealii::Vector<double> step_increment; ///< of the last load step (Predictor = extrapolate)
     std::vector<IpState<dim>> ip;
     // explicit dynamics: the rest of the state of the integrator
     dealii::Vector<double> velocity, acceleration, f_int;
@@ -197,6 +198,8 @@ private:
   std::map<dealii::types::global_dof_index, double> boundary_values_;
   dealii::Vector<double> mass_, displacement_, velocity_, f_int_, f_ext_;
   dealii::Vector<double> f_hourglass_; ///< the hourglass part of f_int_ (one point)
+  /// displacement change over the last converged load step (its sub-steps together)
+  dealii::Vector<double> step_increment_;
   std::vector<IpState<dim>> ip_; ///< cell by cell, quadrature_.size() per cell
   double h_min_ = 0.0;
   dealii::Point<dim> lo_, hi_; ///< bounding box of the reference mesh

@@ -89,8 +89,8 @@ int ExplicitSolver<dim>::stop_signal_received() const
 template <int dim>
 void ExplicitSolver<dim>::save_converged_state()
 {
-  converged_ = {stage_,        step_in_stage_, step_, load_case_->reference(), displacement_, ip_,
-                velocity_,     acceleration_,  f_int_, time_,                    energy_.pack()};
+  converged_ = {stage_, step_in_stage_, step_,  load_case_->reference(), displacement_, step_increment_, ip_,
+                velocity_, acceleration_, f_int_, time_, energy_.pack()};
 }
 
 template <int dim>
@@ -112,6 +112,7 @@ std::string ExplicitSolver<dim>::write_checkpoint()
       d.h_ic = converged_.reference.h_ic;
       d.wall_seconds = MPI_Wtime() - t_start_;
       d.displacement.assign(converged_.displacement.begin(), converged_.displacement.end());
+      d.step_increment.assign(converged_.step_increment.begin(), converged_.step_increment.end());
       d.ip_state_width = IpState<dim>::packed_size();
       d.ip_state.resize(d.ip_state_width * converged_.ip.size());
       for (std::size_t p = 0; p < converged_.ip.size(); ++p)
@@ -179,7 +180,7 @@ std::string ExplicitSolver<dim>::resume_from_checkpoint()
                              prm_.file + "':" + differences(d.parameters, prm_.identity) +
                              "\nResume with the parameter file of that run, or start a new run "
                              "with another 'Output directory'");
-  if (d.displacement.size() != displacement_.size())
+  if (d.displacement.size() != displacement_.size() || d.step_increment.size() != displacement_.size())
     throw std::runtime_error("--resume: checkpoint '" + file + "' holds " +
                              std::to_string(d.displacement.size()) + " degrees of freedom, the mesh has " +
                              std::to_string(displacement_.size()) + " (was the mesh file changed?)");
@@ -194,6 +195,7 @@ std::string ExplicitSolver<dim>::resume_from_checkpoint()
                              std::to_string(IpState<dim>::packed_size()));
   load_case_->set_reference({d.u_top_ic, d.h_ic});
   std::copy(d.displacement.begin(), d.displacement.end(), displacement_.begin());
+  std::copy(d.step_increment.begin(), d.step_increment.end(), step_increment_.begin());
   for (std::size_t p = 0; p < ip_.size(); ++p)
     ip_[p].unpack(&d.ip_state[p * d.ip_state_width]);
   summary_rows_ = d.summary_rows;

@@ -151,6 +151,8 @@ unsigned int ExplicitSolver<dim>::solve_load_step()
     }
   }
   material_->commit();
+  step_increment_ = displacement_;
+  step_increment_ -= start;
   return iterations;
 }
 

@@ -160,6 +160,15 @@ void DynamicRelaxation::declare_parameters(dealii::ParameterHandler& prm)
                     "motion (Underwood's local estimate); the previous value is kept when that "
                     "quotient is not positive, and the first iteration of a load step uses the "
                     "secant one.");
+  prm.declare_entry("Predictor", "none", Selection("none|extrapolate"),
+                    "Where the free dofs start a load step. none ([LBS]): where the last one "
+                    "ended, so the new boundary values move only the boundary layer at first "
+                    "and the rest of the mesh, and every RVE in it, is dragged along by the "
+                    "relaxation. extrapolate: there plus the last load step's converged "
+                    "increment, scaled to this step's (sub-)step size (linear extrapolation, "
+                    "as Abaqus/Standard's default); from the second step of a stage on, the "
+                    "first has no increment of its own kind. The converged state is again "
+                    "an equilibrium of (M9); only the start of the search moves.");
   prm.declare_entry("Damping ratio", "1.0", Double(0.0), "xi of (M7)/(M8).");
   prm.declare_entry("Safety factor", "0.5", Double(0.0, 1.0),
                     "gamma of (M8), < 1. With RVEs and continuous history a larger value "
@@ -186,6 +195,7 @@ void DynamicRelaxation::parse_parameters(dealii::ParameterHandler& prm)
   prm.enter_subsection("Dynamic relaxation");
   frequency_estimate = prm.get("Frequency estimate") == "incremental" ? FrequencyEstimate::incremental
                                                                       : FrequencyEstimate::secant;
+  predictor = prm.get("Predictor") == "extrapolate" ? Predictor::extrapolate : Predictor::none;
   damping_ratio = prm.get_double("Damping ratio");
   safety_factor = prm.get_double("Safety factor");
   kinetic_tolerance = prm.get_double("Kinetic energy tolerance");

@@ -80,6 +80,13 @@ struct DynamicRelaxation
     incremental ///< the change over the last iteration: dU^T df_int / dU^T M dU over all dofs
   };
   FrequencyEstimate frequency_estimate;
+  /// The free dofs' first iterate of a load step.
+  enum class Predictor
+  {
+    none,       ///< where the last step ended ([LBS])
+    extrapolate ///< plus the last step's increment, scaled to this one
+  };
+  Predictor predictor;
   double damping_ratio, safety_factor, kinetic_tolerance;
   unsigned int max_iterations, min_iterations;
   unsigned int ramp_iterations; ///< the step's load grows over this many iterations (0: at once)

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Turns the runs of benchmarks/lbs2018/run.sh into the committed results.
 
-Usage: analyse.py [LBS2018_DIR]   (Debian's python3 with numpy, matplotlib, h5py)
+Usage: analyse.py [DIR]   (Debian's python3 with numpy, matplotlib, h5py)
+DIR holds runs/ and results/: benchmarks/lbs2018 (default) or its fast/.
 
 Reads runs/CASE/{summary.csv,history.h5,solution-*.vtu,particles/} of the
 multiscale cases and runs/dns_*/rve.csv of the DNS, and results/runs.csv
@@ -37,7 +38,7 @@ import numpy as np
 from matplotlib.collections import PolyCollection
 
 here = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(__file__))
-sys.path.insert(0, os.path.join(here, "..", "..", "scripts"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
 from plot_particles import draw as draw_particles  # noqa: E402
 
 runs, results = os.path.join(here, "runs"), os.path.join(here, "results")

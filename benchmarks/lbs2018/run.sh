@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Reproduces the [LBS] study of physics.md §3.1 (the paper's §4) with FE2DEM.
 #
-# Usage: benchmarks/lbs2018/run.sh [--build DIR] [--np N] CASE... | all
+# Usage: benchmarks/lbs2018/run.sh [--build DIR] [--np N] [--fast] CASE... | all
 #   mesh_1x1 mesh_1x2 mesh_2x4 mesh_4x8   mesh convergence (mesh_2x4 is also
 #                                         the reference of every study:
 #                                         friction 0.4, free rotation, lbs_ref)
@@ -14,17 +14,24 @@
 #   locked                                inner-particle rotation locked (2x4)
 #   a005 a008                             initial anisotropy 0.05 / 0.08 (2x4)
 #   all                                   every case above, then analyse.py
+#                                         (the DNS cases run on one core
+#                                         each, side by side)
 # Options: --build DIR (default: build/ of the repository), --np N MPI ranks
-# of the multiscale runs (default 2; the DNS runs on one core).
+# of the multiscale runs (default 2; the DNS runs on one core), --fast the
+# multiscale cases with the settings of benchmarks/perf (issue 19: 50 DEM
+# steps per iteration, incremental frequency estimate, extrapolating
+# predictor, Inner start = affine) into fast/ instead of the study's
+# directories (the DNS cases are the same in both).
 #
 # Raw output goes to runs/CASE/ (not committed); the wall time, core count,
 # date, commit and machine of each case go to results/runs.csv. analyse.py
-# turns runs/ into the committed results/*.csv and results/*.png.
+# turns runs/ into the committed results/*.csv and results/*.png. With
+# --fast: fast/runs/ and fast/results/.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 source "$root/benchmarks/common.sh"
-build="$root/build" np=2
+build="$root/build" np=2 fast=0
 all_cases=(mesh_1x1 mesh_1x2 mesh_2x4 mesh_4x8 mesh_4x8_steps22 dns_A dns_B dns_B_tol1e-3 dns_B_tol1e-4
            mu0.2 mu0.6 locked a005 a008)
 
@@ -35,6 +42,7 @@ while [[ $# -gt 0 ]]; do
     --build) [[ $# -ge 2 ]] || usage; build="$(realpath -m "$2")"; shift 2 ;;
     --np) [[ $# -ge 2 && "$2" =~ ^[1-9][0-9]*$ ]] || { echo "run.sh: --np needs a positive integer" >&2; exit 2; }
           np=$2; shift 2 ;;
+    --fast) fast=1; shift ;;
     all) cases+=("${all_cases[@]}"); shift ;;
     -h|--help) usage ;;
     *) [[ " ${all_cases[*]} " == *" $1 "* ]] || { echo "run.sh: unknown case '$1' (cases: ${all_cases[*]} all)" >&2; exit 2; }
@@ -46,7 +54,10 @@ for exe in dealii_app/solver/fe2dem dealii_app/rve_driver/fe2dem-rve; do
   [[ -x "$build/$exe" ]] || { echo "run.sh: $build/$exe not found: build first (scripts/run-tests.sh) or pass --build DIR" >&2; exit 1; }
 done
 cd "$here"
-mkdir -p runs results
+base=.  # holds runs/ and results/
+[[ $fast == 0 ]] || base=fast
+runs=$base/runs results=$base/results
+mkdir -p "$runs" "$results"
 
 # The entries a case changes in lbs2018.prm (printed after it: the last value wins).
 overrides() {
@@ -70,6 +81,13 @@ overrides() {
   esac
 }
 
+# --fast: the settings of benchmarks/perf/README.md (issue 19), after a case's own.
+fast_overrides() {
+  printf 'subsection Material\n  set DEM steps per iteration = 50\nend\n'
+  printf 'subsection Dynamic relaxation\n  set Frequency estimate = incremental\n  set Predictor = extrapolate\nend\n'
+  printf 'subsection RVE\n  set Inner start = affine\nend\n'
+}
+
 # The entries a DNS case changes in dns.prm.
 dns_overrides() {
   case "$1" in
@@ -80,11 +98,11 @@ dns_overrides() {
 # The reference packing tiled 1x2 (A) or 2x4 (B), framed like an RVE.
 make_dns_packing() {
   local name=$1 nx=$2 ny=$3
-  mkdir -p runs/packings
+  mkdir -p "$runs/packings"
   python3 "$root/rve_templates/tile_packing.py" "$root/rve_templates/packings/lbs_ref.periodic.data" \
-    "$nx" "$ny" "runs/packings/$name.periodic.data"
-  python3 "$root/rve_templates/build_frame.py" "runs/packings/$name.periodic.data" "$name" \
-    --outdir runs/packings --allow-rectangular --quiet
+    "$nx" "$ny" "$runs/packings/$name.periodic.data"
+  python3 "$root/rve_templates/build_frame.py" "$runs/packings/$name.periodic.data" "$name" \
+    --outdir "$runs/packings" --allow-rectangular --quiet
 }
 
 # Paths in a parameter file are relative to it; the case copy sits in runs/CASE/.
@@ -93,22 +111,22 @@ absolute_paths() {
 }
 
 run_case() {
-  local c=$1 out="runs/$1" prm status=1 cores start
+  local c=$1 out="$runs/$1" prm status=1 cores start
   rm -rf "$out"; mkdir -p "$out"
   start=$(date +%s.%N)
   case "$c" in
     dns_*)
       local tiles=dns_B
-      if [[ $c == dns_A ]]; then tiles=dns_A; make_dns_packing dns_A 1 2; else make_dns_packing dns_B 2 4; fi
+      [[ $c != dns_A ]] || tiles=dns_A
       prm="$out/case.prm"
-      { sed "s#runs/packings/dns_B#$here/runs/packings/$tiles#" dns.prm; dns_overrides "$c"; } > "$prm"
+      { sed "s#runs/packings/dns_B#$here/$runs/packings/$tiles#" dns.prm; dns_overrides "$c"; } > "$prm"
       absolute_paths "$prm"
       cores=1
-      echo "run.sh: $c: fe2dem-rve on $(awk '/rve_natoms/ {print $4}' "runs/packings/$tiles.vars") particles"
+      echo "run.sh: $c: fe2dem-rve on $(awk '/rve_natoms/ {print $4}' "$runs/packings/$tiles.vars") particles"
       "$build/dealii_app/rve_driver/fe2dem-rve" "$prm" > "$out/run.log" 2>&1 && status=0 || true ;;
     *)
       prm="$out/case.prm"
-      { cat lbs2018.prm; overrides "$c"; } > "$prm"
+      { cat lbs2018.prm; overrides "$c"; [[ $fast == 0 ]] || fast_overrides; } > "$prm"
       absolute_paths "$prm"
       cores=$np
       echo "run.sh: $c: fe2dem on $np ranks"
@@ -121,13 +139,29 @@ run_case() {
   echo "${c}_cores $cores 1"
   echo "${c}_completed $(( 1 - status )) bool"
   [[ $status == 0 ]] || { echo "run.sh: $c did not finish; end of $out/run.log:" >&2; tail -n 5 "$out/run.log" >&2; }
-  # results/runs.csv keeps the newest row of each case
-  if [[ -f results/runs.csv ]]; then
-    grep -v "^[^,]*,[^,]*,[^,]*,$c," results/runs.csv > results/runs.csv.tmp || true
-    mv results/runs.csv.tmp results/runs.csv
-  fi
-  append_result results/runs.csv "case,cores,wall_s,completed" "$c,$cores,$wall,$(( 1 - status ))"
+  # results/runs.csv keeps the newest row of each case (locked: DNS cases end concurrently)
+  (
+    flock 9
+    if [[ -f $results/runs.csv ]]; then
+      grep -v "^[^,]*,[^,]*,[^,]*,$c," "$results/runs.csv" > "$results/runs.csv.tmp" || true
+      mv "$results/runs.csv.tmp" "$results/runs.csv"
+    fi
+    append_result "$results/runs.csv" "case,cores,wall_s,completed" "$c,$cores,$wall,$(( 1 - status ))"
+  ) 9> "$runs/.runs.csv.lock"
 }
 
-for c in "${cases[@]}"; do run_case "$c"; done
-/usr/bin/python3 "$here/analyse.py" "$here"
+# The multiscale cases one after the other (each uses --np ranks), then the
+# DNS cases, one core each, as many at once as there are cores.
+multiscale=() dns=()
+for c in "${cases[@]}"; do if [[ $c == dns_* ]]; then dns+=("$c"); else multiscale+=("$c"); fi; done
+for c in "${multiscale[@]}"; do run_case "$c"; done
+[[ " ${dns[*]} " != *" dns_A "* ]] || make_dns_packing dns_A 1 2
+[[ " ${dns[*]} " != *" dns_B"* ]] || make_dns_packing dns_B 2 4
+running=0
+for c in "${dns[@]}"; do
+  run_case "$c" &
+  running=$((running + 1))
+  if [[ $running -ge $(nproc) ]]; then wait -n; running=$((running - 1)); fi
+done
+wait
+/usr/bin/python3 "$here/analyse.py" "$here/$base"

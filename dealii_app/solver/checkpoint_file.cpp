@@ -22,7 +22,8 @@ namespace
 //    DEM steps, servo iterations; 2: IpState::pack() (every RVE statistic);
 // 3: energy.csv rows, the energy balance and the state of explicit dynamics;
 // 4: summary rows with the column rve_iteration_max_s (a resumed run writes
-//    the checkpoint's rows first, so they must have the columns of this one).
+//    the checkpoint's rows first, so they must have the columns of this one);
+// 5: /step_increment, the start of the next step with 'Predictor = extrapolate'.
 constexpr int format_version = 5;
 
 void check(herr_t status, const std::string& what, const std::string& file)

@@ -419,6 +419,7 @@ unsigned int ExplicitSolver<dim>::relax_load_step(const double fraction_begin)
     return it >= ramp ? fraction_end : fraction_begin + (fraction_end - fraction_begin) * it / ramp;
   };
   velocity_ = 0.0;
+  // The first step of a stage has no increment of its kind (stage 1's is isotropic).
   if (dr.predictor == DynamicRelaxation::Predictor::extrapolate && step_in_stage_ > 1)
     displacement_.add((fraction_end - fraction_begin) * load_case_->steps_in_stage(stage_), step_increment_);
   apply_boundary_values(fraction_at(1));

@@ -89,8 +89,8 @@ int ExplicitSolver<dim>::stop_signal_received() const
 template <int dim>
 void ExplicitSolver<dim>::save_converged_state()
 {
-  converged_ = {stage_, step_in_stage_, step_,  load_case_->reference(), displacement_, step_increment_, ip_,
-                velocity_, acceleration_, f_int_, time_, energy_.pack()};
+  converged_ = {stage_,    step_in_stage_, step_,  load_case_->reference(), displacement_, step_increment_,
+                ip_,       velocity_,      acceleration_, f_int_,                time_,         energy_.pack()};
 }
 
 template <int dim>

@@ -201,6 +201,10 @@ CheckpointData read_checkpoint(const std::string& file)
     d.wall_seconds = read_attribute<double>(h, "wall_seconds", H5T_NATIVE_DOUBLE, file);
     d.displacement = read_vector<double>(h, "displacement", H5T_NATIVE_DOUBLE, file);
     d.step_increment = read_vector<double>(h, "step_increment", H5T_NATIVE_DOUBLE, file);
+    if (d.step_increment.size() != d.displacement.size())
+      throw std::runtime_error("checkpoint '" + file + "': /step_increment holds " +
+                               std::to_string(d.step_increment.size()) + " values, /displacement " +
+                               std::to_string(d.displacement.size()));
     hid_t set = H5Dopen2(h, "ip_state", H5P_DEFAULT);
     hid_t space = H5Dget_space(set);
     hsize_t dims[2] = {0, 0};

@@ -180,7 +180,7 @@ std::string ExplicitSolver<dim>::resume_from_checkpoint()
                              prm_.file + "':" + differences(d.parameters, prm_.identity) +
                              "\nResume with the parameter file of that run, or start a new run "
                              "with another 'Output directory'");
-  if (d.displacement.size() != displacement_.size() || d.step_increment.size() != displacement_.size())
+  if (d.displacement.size() != displacement_.size())
     throw std::runtime_error("--resume: checkpoint '" + file + "' holds " +
                              std::to_string(d.displacement.size()) + " degrees of freedom, the mesh has " +
                              std::to_string(displacement_.size()) + " (was the mesh file changed?)");

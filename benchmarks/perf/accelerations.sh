@@ -19,7 +19,8 @@
 #   energy tolerance' E, +rampN its 'Ramp iterations' N (e.g.
 #   mts50+incremental+sf0.9), +extrap its 'Predictor = extrapolate',
 #   +affine the RVE's 'Inner start = affine' (e.g.
-#   mts50+incremental+extrap+affine), and +early ends the run after the first two
+#   mts50+incremental+extrap+affine), +ext 'Boundary extension = elastic',
+#   and +early ends the run after the first two
 #   axial steps (1 %: the start of the curve, where the DR transients show).
 #   Default: the first six.
 # ACCEL_WORKDIR=DIR keeps each run in DIR/MESH_SETTING with a checkpoint
@@ -48,6 +49,7 @@ overrides() {
         ramp*) printf 'subsection Dynamic relaxation\n  set Ramp iterations = %s\nend\n' "${1##*+ramp}" ;;
         extrap) printf 'subsection Dynamic relaxation\n  set Predictor = extrapolate\nend\n' ;;
         affine) printf 'subsection RVE\n  set Inner start = affine\nend\n' ;;
+        ext) printf 'subsection Dynamic relaxation\n  set Boundary extension = elastic\nend\n' ;;
         early) printf 'subsection Loading\n  set Load steps = 2\n  set Axial strain = 0.01\nend\n' ;;
         *) echo "unknown suffix '+${1##*+}' of setting '$1'" >&2; exit 2 ;;
       esac ;;

@@ -422,6 +422,8 @@ unsigned int ExplicitSolver<dim>::relax_load_step(const double fraction_begin)
   // The first step of a stage has no increment of its kind (stage 1's is isotropic).
   if (dr.predictor == DynamicRelaxation::Predictor::extrapolate && step_in_stage_ > 1)
     displacement_.add((fraction_end - fraction_begin) * load_case_->steps_in_stage(stage_), step_increment_);
+  else if (dr.boundary_extension == DynamicRelaxation::BoundaryExtension::elastic)
+    extend_boundary_increment(fraction_end);
   apply_boundary_values(fraction_at(1));
   integrator_->start();
   const unsigned int max_bounded = 1000;
@@ -453,6 +455,21 @@ unsigned int ExplicitSolver<dim>::relax_load_step(const double fraction_begin)
   }
   throw std::runtime_error("load step " + std::to_string(step_) + ": dynamic relaxation did not "
                            "converge within 'Max iterations' = " + std::to_string(dr.max_iterations));
+}
+
+// 'Boundary extension = elastic': the free dofs move by the elastic extension
+// of the step's prescribed increment (elastic_extension.h).
+template <int dim>
+void ExplicitSolver<dim>::extend_boundary_increment(const double fraction_end)
+{
+  if (!extension_)
+    extension_ = std::make_unique<ElasticExtension<dim>>(dof_handler_, prm_.relaxation.extension_poisson_ratio);
+  auto increment = load_case_->constraints(stage_, fraction_end);
+  for (auto& [i, value] : increment)
+    value -= displacement_[i];
+  Vector<double> du;
+  extension_->extend(increment, du);
+  displacement_ += du;
 }
 
 template class ExplicitSolver<2>;

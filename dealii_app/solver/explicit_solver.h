@@ -17,6 +17,7 @@
 
 #include "central_difference.h"
 #include "dynamic_relaxation.h"
+#include "elastic_extension.h"
 #include "energy_balance.h"
 #include "history_writer.h"
 #include "ip_state.h"
@@ -110,6 +111,8 @@ private:
 
   /// @param fraction_begin the load fraction the step starts from (the ramp's start).
   unsigned int relax_load_step(double fraction_begin);
+  /// Moves the free dofs by the elastic extension of the prescribed increment up to @p fraction_end.
+  void extend_boundary_increment(double fraction_end);
   void inject_fault_if_due(bool first_attempt);
   void finish_isotropic_stage();
   /// The step's F becomes every IP's F_last_step (after its output).
@@ -200,6 +203,7 @@ private:
   dealii::Vector<double> f_hourglass_; ///< the hourglass part of f_int_ (one point)
   /// displacement change over the last converged load step (its sub-steps together)
   dealii::Vector<double> step_increment_;
+  std::unique_ptr<ElasticExtension<dim>> extension_; ///< 'Boundary extension = elastic', made at first use
   std::vector<IpState<dim>> ip_; ///< cell by cell, quadrature_.size() per cell
   double h_min_ = 0.0;
   dealii::Point<dim> lo_, hi_; ///< bounding box of the reference mesh

@@ -169,6 +169,19 @@ void DynamicRelaxation::declare_parameters(dealii::ParameterHandler& prm)
                     "as Abaqus/Standard's default); from the second step of a stage on, the "
                     "first has no increment of its own kind. The converged state is again "
                     "an equilibrium of (M9); only the start of the search moves.");
+  prm.declare_entry("Boundary extension", "none", Selection("none|elastic"),
+                    "Where the free dofs start a load step that 'Predictor' does not move (every "
+                    "step with none, the first of each stage with extrapolate). none ([LBS]): "
+                    "where the last step ended. elastic: there plus the elastic extension of the "
+                    "step's prescribed boundary increment (linear isotropic elasticity on the "
+                    "reference mesh with 'Extension Poisson ratio', no loads), so that the whole "
+                    "mesh and its RVEs take a share of the step's strain at once instead of the "
+                    "boundary layer taking all of it (elastic_extension.h). A step whose "
+                    "prescribed values do not change (stage 1 of the biaxial test) starts as "
+                    "with none.");
+  prm.declare_entry("Extension Poisson ratio", "0.25", Double(0.0, 0.4999),
+                    "nu of 'Boundary extension = elastic' (2D: plane strain). It shapes only the "
+                    "first iterate, not the converged state.");
   prm.declare_entry("Damping ratio", "1.0", Double(0.0), "xi of (M7)/(M8).");
   prm.declare_entry("Safety factor", "0.5", Double(0.0, 1.0),
                     "gamma of (M8), < 1. With RVEs and continuous history a larger value "
@@ -196,6 +209,9 @@ void DynamicRelaxation::parse_parameters(dealii::ParameterHandler& prm)
   frequency_estimate = prm.get("Frequency estimate") == "incremental" ? FrequencyEstimate::incremental
                                                                       : FrequencyEstimate::secant;
   predictor = prm.get("Predictor") == "extrapolate" ? Predictor::extrapolate : Predictor::none;
+  boundary_extension =
+    prm.get("Boundary extension") == "elastic" ? BoundaryExtension::elastic : BoundaryExtension::none;
+  extension_poisson_ratio = prm.get_double("Extension Poisson ratio");
   damping_ratio = prm.get_double("Damping ratio");
   safety_factor = prm.get_double("Safety factor");
   kinetic_tolerance = prm.get_double("Kinetic energy tolerance");

@@ -87,6 +87,14 @@ struct DynamicRelaxation
     extrapolate ///< plus the last step's increment, scaled to this one
   };
   Predictor predictor;
+  /// The free dofs' first iterate of a load step that is not extrapolated.
+  enum class BoundaryExtension
+  {
+    none,   ///< only the prescribed dofs move ([LBS])
+    elastic ///< the elastic extension of their increment (elastic_extension.h)
+  };
+  BoundaryExtension boundary_extension;
+  double extension_poisson_ratio; ///< nu of the elastic extension, in [0, 0.5)
   double damping_ratio, safety_factor, kinetic_tolerance;
   unsigned int max_iterations, min_iterations;
   unsigned int ramp_iterations; ///< the step's load grows over this many iterations (0: at once)

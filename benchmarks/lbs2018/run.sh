@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Reproduces the [LBS] study of physics.md §3.1 (the paper's §4) with FE2DEM.
 #
-# Usage: benchmarks/lbs2018/run.sh [--build DIR] [--np N] [--fast] CASE... | all
+# Usage: benchmarks/lbs2018/run.sh [--build DIR] [--np N] [--mts20] CASE... | all
 #   mesh_1x1 mesh_1x2 mesh_2x4 mesh_4x8   mesh convergence (mesh_2x4 is also
 #                                         the reference of every study:
 #                                         friction 0.4, free rotation, lbs_ref)
@@ -17,21 +17,20 @@
 #                                         (the DNS cases run on one core
 #                                         each, side by side)
 # Options: --build DIR (default: build/ of the repository), --np N MPI ranks
-# of the multiscale runs (default 2; the DNS runs on one core), --fast the
-# multiscale cases with the settings of benchmarks/perf (issue 19: 50 DEM
-# steps per iteration, incremental frequency estimate, extrapolating
-# predictor, Inner start = affine) into fast/ instead of the study's
-# directories (the DNS cases are the same in both).
+# of the multiscale runs (default 2; the DNS runs on one core), --mts20 the
+# multiscale cases with the study's settings before issue 19 (at most 20 DEM
+# steps per iteration, secant frequency estimate, no predictor, Inner start =
+# keep) into mts20/ instead (the DNS cases are the same in both).
 #
 # Raw output goes to runs/CASE/ (not committed); the wall time, core count,
 # date, commit and machine of each case go to results/runs.csv. analyse.py
 # turns runs/ into the committed results/*.csv and results/*.png. With
-# --fast: fast/runs/ and fast/results/.
+# --mts20: mts20/runs/ and mts20/results/.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 source "$root/benchmarks/common.sh"
-build="$root/build" np=2 fast=0
+build="$root/build" np=2 mts20=0
 all_cases=(mesh_1x1 mesh_1x2 mesh_2x4 mesh_4x8 mesh_4x8_steps22 dns_A dns_B dns_B_tol1e-3 dns_B_tol1e-4
            mu0.2 mu0.6 locked a005 a008)
 
@@ -42,7 +41,7 @@ while [[ $# -gt 0 ]]; do
     --build) [[ $# -ge 2 ]] || usage; build="$(realpath -m "$2")"; shift 2 ;;
     --np) [[ $# -ge 2 && "$2" =~ ^[1-9][0-9]*$ ]] || { echo "run.sh: --np needs a positive integer" >&2; exit 2; }
           np=$2; shift 2 ;;
-    --fast) fast=1; shift ;;
+    --mts20) mts20=1; shift ;;
     all) cases+=("${all_cases[@]}"); shift ;;
     -h|--help) usage ;;
     *) [[ " ${all_cases[*]} " == *" $1 "* ]] || { echo "run.sh: unknown case '$1' (cases: ${all_cases[*]} all)" >&2; exit 2; }
@@ -55,7 +54,7 @@ for exe in dealii_app/solver/fe2dem dealii_app/rve_driver/fe2dem-rve; do
 done
 cd "$here"
 base=.  # holds runs/ and results/
-[[ $fast == 0 ]] || base=fast
+[[ $mts20 == 0 ]] || base=mts20
 runs=$base/runs results=$base/results
 mkdir -p "$runs" "$results"
 
@@ -81,11 +80,12 @@ overrides() {
   esac
 }
 
-# --fast: the settings of benchmarks/perf/README.md (issue 19), after a case's own.
-fast_overrides() {
-  printf 'subsection Material\n  set DEM steps per iteration = 50\nend\n'
-  printf 'subsection Dynamic relaxation\n  set Frequency estimate = incremental\n  set Predictor = extrapolate\nend\n'
-  printf 'subsection RVE\n  set Inner start = affine\nend\n'
+# --mts20: the study's settings before issue 19 (README), after a case's own.
+mts20_overrides() {
+  printf 'subsection Material\n  set DEM steps per iteration = 20\nend\n'
+  printf 'subsection Dynamic relaxation\n  set Frequency estimate = secant\n  set Predictor = none\n'
+  printf '  set Boundary extension = none\nend\n'
+  printf 'subsection RVE\n  set Inner start = keep\nend\n'
 }
 
 # The entries a DNS case changes in dns.prm.
@@ -126,7 +126,7 @@ run_case() {
       "$build/dealii_app/rve_driver/fe2dem-rve" "$prm" > "$out/run.log" 2>&1 && status=0 || true ;;
     *)
       prm="$out/case.prm"
-      { cat lbs2018.prm; overrides "$c"; [[ $fast == 0 ]] || fast_overrides; } > "$prm"
+      { cat lbs2018.prm; overrides "$c"; [[ $mts20 == 0 ]] || mts20_overrides; } > "$prm"
       absolute_paths "$prm"
       cores=$np
       echo "run.sh: $c: fe2dem on $np ranks"

@@ -3,6 +3,7 @@
 
 #include "checkpoint_file.h"
 #include "corotational_material.h"
+#include "elastic_extension.h"
 #include "neo_hookean.h"
 #include "rve_material.h"
 #include "servo_rve_factory.h"
@@ -462,13 +463,14 @@ unsigned int ExplicitSolver<dim>::relax_load_step(const double fraction_begin)
 template <int dim>
 void ExplicitSolver<dim>::extend_boundary_increment(const double fraction_end)
 {
-  if (!extension_)
-    extension_ = std::make_unique<ElasticExtension<dim>>(dof_handler_, prm_.relaxation.extension_poisson_ratio);
   auto increment = load_case_->constraints(stage_, fraction_end);
   for (auto& [i, value] : increment)
     value -= displacement_[i];
+  // Made at each use (once per stage) rather than kept: its matrix would
+  // outweigh the rest of the replicated macro state on a large 3D mesh.
+  const ElasticExtension<dim> extension(dof_handler_, prm_.relaxation.extension_poisson_ratio);
   Vector<double> du;
-  extension_->extend(increment, du);
+  extension.extend(increment, du);
   displacement_ += du;
 }
 

@@ -17,7 +17,6 @@
 
 #include "central_difference.h"
 #include "dynamic_relaxation.h"
-#include "elastic_extension.h"
 #include "energy_balance.h"
 #include "history_writer.h"
 #include "ip_state.h"
@@ -203,7 +202,6 @@ private:
   dealii::Vector<double> f_hourglass_; ///< the hourglass part of f_int_ (one point)
   /// displacement change over the last converged load step (its sub-steps together)
   dealii::Vector<double> step_increment_;
-  std::unique_ptr<ElasticExtension<dim>> extension_; ///< 'Boundary extension = elastic', made at first use
   std::vector<IpState<dim>> ip_; ///< cell by cell, quadrature_.size() per cell
   double h_min_ = 0.0;
   dealii::Point<dim> lo_, hi_; ///< bounding box of the reference mesh

@@ -466,8 +466,9 @@ void ExplicitSolver<dim>::extend_boundary_increment(const double fraction_end)
   auto increment = load_case_->constraints(stage_, fraction_end);
   for (auto& [i, value] : increment)
     value -= displacement_[i];
-  // Made at each use (once per stage) rather than kept: its matrix would
-  // outweigh the rest of the replicated macro state on a large 3D mesh.
+  // Made at each use (once per stage with the predictor, every step without)
+  // rather than kept: its matrix would outweigh the rest of the replicated
+  // macro state on a large 3D mesh.
   const ElasticExtension<dim> extension(dof_handler_, prm_.relaxation.extension_poisson_ratio);
   Vector<double> du;
   extension.extend(increment, du);

@@ -180,8 +180,9 @@ void DynamicRelaxation::declare_parameters(dealii::ParameterHandler& prm)
                     "prescribed values do not change (stage 1 of the biaxial test) starts as "
                     "with none.");
   prm.declare_entry("Extension Poisson ratio", "0.25", Double(0.0, 0.4999),
-                    "nu of 'Boundary extension = elastic' (2D: plane strain). It shapes only the "
-                    "first iterate, not the converged state.");
+                    "nu of 'Boundary extension = elastic' (2D: plane strain). It shapes the "
+                    "first iterate; with continuous RVE history the RVEs keep the path from "
+                    "there, so the converged state can depend on it too (not measured).");
   prm.declare_entry("Damping ratio", "1.0", Double(0.0), "xi of (M7)/(M8).");
   prm.declare_entry("Safety factor", "0.5", Double(0.0, 1.0),
                     "gamma of (M8), < 1. With RVEs and continuous history a larger value "

@@ -34,7 +34,7 @@ build="$root/build" np=2 mts20=0
 all_cases=(mesh_1x1 mesh_1x2 mesh_2x4 mesh_4x8 mesh_4x8_steps22 dns_A dns_B dns_B_tol1e-3 dns_B_tol1e-4
            mu0.2 mu0.6 locked a005 a008)
 
-usage() { sed -n '4,20p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 2; }
+usage() { sed -n '4,23p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 2; }
 cases=()
 while [[ $# -gt 0 ]]; do
   case "$1" in

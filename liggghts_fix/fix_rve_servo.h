@@ -270,6 +270,8 @@ private:
   Tensor timed_velocity_gradient() const;
   /// A check of a timed solve: homogenise, filter, finish at its last step.
   void timed_check(long step);
+  /// The servo correction of a timed solve, with the integral action of timed_servo integral.
+  void apply_timed_servo_correction();
   /// The contact of contacts_ with the largest overlap, for messages.
   std::string describe_largest_overlap() const;
   /// Stops with an error if the packing's centres do not fit the dimension (z = 0 in 2D).
@@ -286,7 +288,7 @@ private:
   void collect_contacts();
   void create_contacts_compute();
   template <class Stream>
-  void transfer_state(Stream& s);
+  void transfer_state(Stream& s, std::uint32_t version);
   void half_kick_inner(bool drift);
   /// inner_start affine: adds / removes the affine velocity of the inner particles.
   void add_affine_velocity();
@@ -374,6 +376,7 @@ private:
   double move_rate_ = 1e-3;
   bool error_on_failure_ = true;
   bool membrane_on_ = true;
+  bool timed_integral_ = true; ///< timed_servo integral (else proportional)
   double max_overlap_ = 0.5;
 
   // frame
@@ -443,6 +446,10 @@ private:
   int timed_samples_ = 0;
   Tensor timed_P_sum_{}, timed_sigma_sum_{}, timed_sigma_lw_sum_{};
   Tensor timed_F_from_ = fe2dem::identity<dim>(); ///< F at the start of the timed solve
+  /// timed_servo integral: running means of the recent servo moves per check (restart state)
+  std::vector<Vector> drift_w_;
+  std::vector<Rotation> drift_theta_pair_;
+  Rotation drift_theta_corner_{};
 };
 } // namespace LAMMPS_NS
 

@@ -125,6 +125,9 @@ void FixRveServo<dim>::parse_arguments(int narg, char** arg)
     {"on_failure", {1, [&](const char* kw, char** v) { error_on_failure_ = choice(kw, v[0], "error", "flag"); }}},
     {"max_overlap", {1, [&](const char* kw, char** v) { max_overlap_ = number(kw, v[0], 0.0, true); }}},
     {"membrane", {1, [&](const char* kw, char** v) { membrane_on_ = choice(kw, v[0], "yes", "no"); }}},
+    {"timed_servo", {1, [&](const char* kw, char** v) {
+                       timed_integral_ = choice(kw, v[0], "integral", "proportional");
+                     }}},
   };
 
   for (int iarg = 3; iarg < narg;)

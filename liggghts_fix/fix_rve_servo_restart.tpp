@@ -20,13 +20,15 @@ using namespace fe2dem;
 namespace fe2dem_fix_detail
 {
 constexpr std::uint32_t state_magic = 0x46453244; // "FE2D"
-constexpr std::uint32_t state_version = 3; // 2: Result::membrane_steps; 3: image flags
+// 2: Result::membrane_steps; 3: image flags; 4: the timed servo's drifts
+// (version 3 records are still read: no drift, as they were made without it).
+constexpr std::uint32_t state_version = 4;
 } // namespace fe2dem_fix_detail
 
 // The one list of everything a restart must carry, used to write and read.
 template <int dim>
 template <class Stream>
-void FixRveServo<dim>::transfer_state(Stream& s)
+void FixRveServo<dim>::transfer_state(Stream& s, std::uint32_t version)
 {
   // frame topology (the reference configuration is not the current one)
   s.io(frame_.origin);
@@ -69,6 +71,12 @@ void FixRveServo<dim>::transfer_state(Stream& s)
   s.io(failure_reason_);
   s.io(result_);
   s.io(checks_since_contact_pass_);
+  if (version >= 4)
+  {
+    s.io(drift_w_);
+    s.io(drift_theta_pair_);
+    s.io(drift_theta_corner_);
+  }
 }
 
 template <int dim>
@@ -77,7 +85,7 @@ void FixRveServo<dim>::write_restart(FILE* fp)
   ByteWriter w;
   w.put(state_magic);
   w.put(state_version);
-  transfer_state(w);
+  transfer_state(w, state_version);
   const auto& bytes = w.bytes();
   if (comm->me == 0)
   {
@@ -96,9 +104,12 @@ void FixRveServo<dim>::restart(char* buf)
   std::uint32_t magic = 0, version = 0;
   r.get(magic);
   r.get(version);
-  if (magic != state_magic || version != state_version)
+  if (magic != state_magic || version < 3 || version > state_version)
     error->fix_error(FLERR, this, "restart data is not from this version of fix rve/servo");
-  transfer_state(r);
+  drift_w_.clear();
+  drift_theta_pair_.clear();
+  drift_theta_corner_ = Rotation{};
+  transfer_state(r, version);
   for (int k = 0; k < dim; ++k)
     if (std::abs(frame_.L[k] - L_[k]) > 1e-12 * L_[k])
       error->fix_error(FLERR, this, "keyword 'cell' differs from the cell in the restart data");

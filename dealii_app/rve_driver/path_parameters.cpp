@@ -57,6 +57,30 @@ void PathParameters::declare_parameters(dealii::ParameterHandler& prm)
                     "with F12 = F21 = 0, as a periodic cell under stress control (benchmarks/frame_vs_periodic).");
   prm.declare_entry("Max stress iterations", "15", Integer(1),
                     "Secant iterations on F per stress-controlled load step.");
+  prm.declare_entry("Drive", "stepped", Selection("stepped|continuous"),
+                    "How the loading stage (biaxial, triaxial, simple shear) is driven. stepped: "
+                    "each load step is relaxed and servo-converged at its F, the stress-controlled "
+                    "components found by secant iterations ([LBS]). continuous: the RVE is loaded "
+                    "at the constant 'Strain rate' in physical time (timed solves of 'Control "
+                    "interval' DEM steps, no relaxation stop), the stress-controlled components "
+                    "following by rate control after every solve; 'Loading steps' rows are "
+                    "written at equal strains. A frictional packing relaxed at fixed strain "
+                    "loses stress, so the two differ; the continuous drive at a low enough rate "
+                    "is the quasi-static reference (benchmarks/yade_periodic, issue 35). The "
+                    "isotropic stage is stepped in both.");
+  prm.declare_entry("Strain rate", "0.25", Double(0.0),
+                    "continuous: the axial compressive strain rate (biaxial, triaxial: d(1 - "
+                    "F_axial/F_axial,ic)/dt) or the shear rate dF12/dt (simple shear) [1/s], > 0. "
+                    "Quasi-static when the inertial number rate * d_mean * sqrt(rho/p) is small "
+                    "(about 1e-4 or less); check by halving it.");
+  prm.declare_entry("Control interval", "200", Integer(1),
+                    "continuous: DEM steps per timed solve, a multiple of the RVE 'Check "
+                    "interval'. After each solve the stress-controlled components of F get their "
+                    "next increment from the stresses of that solve (its box-filtered mean).");
+  prm.declare_entry("Shear normal stress", "false", Bool(),
+                    "simple shear: hold sigma22 = -Pressure through F22 (constant normal stress, "
+                    "as a shear box under a normal load) instead of holding F22 (constant "
+                    "height). F11 (and F33) stay fixed either way.");
   prm.leave_subsection();
 }
 
@@ -76,6 +100,10 @@ void PathParameters::parse_parameters(dealii::ParameterHandler& prm, const std::
   free_shear = prm.get_bool("Free shear");
   axial_y = prm.get("Axial direction") == "y";
   isotropic_components = prm.get("Isotropic control") == "each component";
+  continuous = prm.get("Drive") == "continuous";
+  strain_rate = prm.get_double("Strain rate");
+  control_interval = prm.get_integer("Control interval");
+  shear_normal_stress = prm.get_bool("Shear normal stress");
   prm.leave_subsection();
   if (type == "isotropic" && (pressure <= 0.0 || isotropic_steps == 0))
     throw std::runtime_error("subsection Path: Type = isotropic needs 'Pressure' > 0 and "
@@ -88,6 +116,16 @@ void PathParameters::parse_parameters(dealii::ParameterHandler& prm, const std::
                              "Type = biaxial");
   if (stress_tolerance <= 0.0)
     throw std::runtime_error("subsection Path: 'Stress tolerance' must be > 0");
+  if (continuous && (type == "isotropic" || type == "table"))
+    throw std::runtime_error("subsection Path: Drive = continuous drives a loading stage at a "
+                             "strain rate; Type = " + type + " has none. Use Drive = stepped, or "
+                             "Type = " + (dimension == 2 ? "biaxial" : "triaxial") + " or simple shear");
+  if (continuous && strain_rate <= 0.0)
+    throw std::runtime_error("subsection Path: Drive = continuous needs 'Strain rate' > 0 (1/s), "
+                             "not 0");
+  if (shear_normal_stress && pressure <= 0.0)
+    throw std::runtime_error("subsection Path: 'Shear normal stress' = true holds sigma22 = "
+                             "-Pressure and needs 'Pressure' > 0");
 }
 
 void Parameters::declare_parameters(dealii::ParameterHandler& prm)
@@ -145,6 +183,12 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
   rve.parse_parameters(prm, base);
   path.parse_parameters(prm, base);
   rve.check_files(file);
+  if (path.continuous && path.control_interval % rve.check_interval != 0)
+    throw std::runtime_error(file + ": subsection Path: 'Control interval' = " +
+                             std::to_string(path.control_interval) +
+                             " must be a multiple of subsection RVE: 'Check interval' = " +
+                             std::to_string(rve.check_interval) +
+                             " (a timed solve ends on a check)");
   if (path.type == "table")
   {
     require_file(path.table_file, "subsection Path: Table file", file);

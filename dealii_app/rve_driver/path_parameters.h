@@ -30,6 +30,12 @@ struct PathParameters
   bool axial_y = false;      ///< triaxial (3D): compress along y instead of z (fe2dem's vertical axis)
   bool isotropic_components; ///< isotropic stage: sigma11 = sigma22 = -p through F11, F22 (F12 = 0)
   unsigned int max_stress_iterations;
+  /// stepped: each load step relaxed and servo-converged at its F ([LBS]);
+  /// continuous: the loading stage at a constant strain rate, as timed solves.
+  bool continuous = false;
+  double strain_rate;             ///< continuous: axial compression or shear rate [1/s]
+  unsigned int control_interval;  ///< continuous: DEM steps per timed solve (stress control update)
+  bool shear_normal_stress;       ///< simple shear: hold sigma22 = -Pressure through F22
 
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm, const std::string& base_dir);

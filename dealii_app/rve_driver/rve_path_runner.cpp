@@ -90,7 +90,8 @@ void RvePathRunner<dim>::open_output()
         csv_ << ',' << t << i << j;
   csv_ << ",residual,ekin_epot,servo_iterations,dem_steps,coordination,anisotropy,"
           "packing_fraction,wall_s,mechanical_coordination,contacts,sliding_contacts,"
-          "max_overlap,F_check_error,stress_iterations,membrane_steps,fabric_deviator\n";
+          "max_overlap,F_check_error,stress_iterations,membrane_steps,fabric_deviator,drive_time_s,"
+          "control_error\n";
   csv_ << std::setprecision(12);
 }
 
@@ -108,7 +109,8 @@ void RvePathRunner<dim>::write_row(const Result& r, unsigned int stress_iteratio
        << r.contacts.mechanical_coordination << ',' << r.contacts.n_contacts << ','
        << r.contacts.n_sliding << ',' << r.contacts.max_overlap << ',' << F_check_error << ','
        << stress_iterations << ',' << membrane_steps_in_step_ << ','
-       << fe2dem::fabric_deviator(r.contacts.fabric) << '\n';
+       << fe2dem::fabric_deviator(r.contacts.fabric) << ',' << drive_time_ << ',' << control_error_
+       << '\n';
   csv_.flush();
   const char* axial_name = axial == 8 ? "33" : "22";
   std::cout << "step " << std::setw(3) << step_ << "  F11 " << std::setw(9) << r.F[0] << "  F"
@@ -323,10 +325,14 @@ void RvePathRunner<dim>::run_shear_stage()
 {
   for (unsigned int k = 1; k <= prm_.path.loading_steps; ++k)
   {
-    Matrix F = F_;
-    F[1] = prm_.path.shear_strain * k / prm_.path.loading_steps; // F12 = gamma
-    solve(F);
-    write_row(rve_.result(), 0);
+    F_[1] = prm_.path.shear_strain * k / prm_.path.loading_steps; // F12 = gamma
+    const auto [comps, targets] = loading_controls();
+    unsigned int its = 0;
+    if (comps.empty())
+      solve(F_);
+    else
+      its = control_components(F_, comps, targets, "the normal stress sigma22", true);
+    write_row(rve_.result(), its);
   }
 }
 
@@ -357,7 +363,9 @@ void RvePathRunner<dim>::run()
   else
   {
     run_isotropic_stage();
-    if (type == "biaxial" || type == "triaxial")
+    if (prm_.path.continuous)
+      run_continuous_stage();
+    else if (type == "biaxial" || type == "triaxial")
       run_biaxial_stage();
     else if (type == "simple shear")
       run_shear_stage();

@@ -5,17 +5,22 @@
  * simple shear, F(t) table) and writes rve.csv, one row per converged load
  * step. The axial direction is y in 2D, z (or y, 'Axial direction') in 3D.
  *
- * Stress-controlled components are reached by a secant iteration on the
- * matching component of F; the RVE continues from each trial (continuous
- * history), so the reported path includes the trial corrections.
+ * Stepped drive: stress-controlled components are reached by a secant
+ * iteration on the matching component of F; the RVE continues from each
+ * trial (continuous history), so the reported path includes the trial
+ * corrections. Continuous drive (rve_path_runner_continuous.cpp): the loading
+ * stage runs at a constant strain rate as timed solves, the stress-controlled
+ * components following by rate control (rate_stress_control.h).
  */
 #pragma once
 
 #include "path_parameters.h"
 #include "servo_rve.h"
 
+#include <cmath>
 #include <fstream>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace fe2dem::rve_driver
@@ -39,6 +44,10 @@ private:
   void run_isotropic_stage();
   void run_biaxial_stage();
   void run_shear_stage();
+  /// Drive = continuous: the biaxial, triaxial or simple shear stage at 'Strain rate'.
+  void run_continuous_stage();
+  /// The stress-controlled components of the loading stage and their targets.
+  std::pair<std::vector<int>, std::vector<double>> loading_controls() const;
   void run_table();
   /**
    * Finds x with stress(solve(make_F(x))) = target by secant steps.
@@ -74,6 +83,8 @@ private:
   long membrane_steps_in_step_ = 0; ///< likewise
   double t_start_ = 0.0;
   Matrix F_ = identity<dim>();
+  double drive_time_ = 0.0;       ///< physical time of the continuous drive [s]
+  double control_error_ = NAN;    ///< continuous: the row's largest stress-control error / Pressure
   double slope_iso_ = 0.0, slope_lateral_ = 0.0;
   Matrix slopes_{}; ///< d sigma_c / d F_c estimates of the mixed control
 };

@@ -1,0 +1,111 @@
+#!/usr/bin/python3
+"""Reads fe2dem-rve's rve.csv (3D) as loading curves and compares them.
+
+Usage:
+  curves.py [--iso N] show RVE_CSV                  the curve, one line per row
+  curves.py [--iso N] compare REF_CSV OTHER_CSV...  each OTHER against REF at REF's strains
+
+The loading stage starts at the last row of the isotropic stage: row
+--iso N (N = 'Isotropic steps'; N = 0 is the packing as relaxed) or, for a
+continuous drive, the row before the first with drive_time_s > 0. Strain: triaxial e_a = 1 - F33/F33_ic, simple shear gamma = F12.
+Stresses are Cauchy (sigma), tension positive; p = -tr(sigma)/3; triaxial
+ratio q/p with q = (sigma11 + sigma22)/2 - sigma33 (compression positive),
+simple shear ratio tau/p with tau = |sigma12|. Volumetric strain det F/det F_ic - 1.
+
+compare prints, per OTHER, the relative difference of the ratio and of the
+driven stress (|sigma33| or |sigma12|) at each REF strain, the largest one
+up to REF's peak ratio and the mean from the peak on, as 'name value' lines.
+"""
+import csv
+import sys
+
+
+def det3(F):
+    return (F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6])
+            + F[2] * (F[3] * F[7] - F[4] * F[6]))
+
+
+ISO = None  # --iso N
+
+
+def load(path):
+    """(kind, rows) with rows of dicts: strain, ratio, stress, ev, p, coordination."""
+    with open(path) as f:
+        raw = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+    if "F33" not in raw[0]:
+        sys.exit(f"{path}: not a 3D rve.csv (no F33 column)")
+    shear = any(abs(r["F12"]) > 1e-12 for r in raw)
+    if ISO is not None:
+        start = ISO
+    elif any(r.get("drive_time_s", 0.0) > 0.0 for r in raw):
+        start = next(k for k, r in enumerate(raw) if r["drive_time_s"] > 0.0) - 1
+    else:
+        sys.exit(f"{path}: a stepped path; give the isotropic row with --iso N")
+    ic = raw[start]
+    J_ic = det3([ic[f"F{i}{j}"] for i in (1, 2, 3) for j in (1, 2, 3)])
+    rows = []
+    for r in raw[start:]:
+        s = [r[f"sigma{i}{j}"] for i in (1, 2, 3) for j in (1, 2, 3)]
+        p = -(s[0] + s[4] + s[8]) / 3.0
+        if shear:
+            strain, stress = r["F12"] - ic["F12"], abs(s[1])
+        else:
+            strain, stress = 1.0 - r["F33"] / ic["F33"], -s[8]
+        ratio = stress / p if shear else ((s[0] + s[4]) / 2.0 - s[8]) / p
+        J = det3([r[f"F{i}{j}"] for i in (1, 2, 3) for j in (1, 2, 3)])
+        rows.append(dict(strain=strain, ratio=ratio, stress=stress, p=p, ev=J / J_ic - 1.0,
+                         coordination=r["coordination"], error=r.get("control_error", float("nan"))))
+    return ("shear" if shear else "triaxial"), rows
+
+
+def interp(rows, key, x):
+    xs = [r["strain"] for r in rows]
+    if x < xs[0] - 1e-12 or x > xs[-1] + 1e-12:
+        return None
+    for k in range(1, len(xs)):
+        if x <= xs[k] + 1e-12:
+            t = (x - xs[k - 1]) / (xs[k] - xs[k - 1])
+            return rows[k - 1][key] + t * (rows[k][key] - rows[k - 1][key])
+    return rows[-1][key]
+
+
+def compare(ref_path, others):
+    kind, ref = load(ref_path)
+    peak = max(range(1, len(ref)), key=lambda k: ref[k]["ratio"])
+    print(f"# reference {ref_path} ({kind}): peak ratio {ref[peak]['ratio']:.4f} at {ref[peak]['strain']:.4%}")
+    for path in others:
+        _, other = load(path)
+        print(f"# {path}")
+        print("strain  ratio_ref  ratio  d_ratio  stress_ref  stress  d_stress  ev_ref  ev")
+        upto, after = [], []
+        for k, r in enumerate(ref[1:], start=1):
+            ratio, stress, ev = (interp(other, key, r["strain"]) for key in ("ratio", "stress", "ev"))
+            if ratio is None:
+                continue
+            d_ratio = ratio / r["ratio"] - 1.0
+            d_stress = stress / r["stress"] - 1.0
+            (upto if k <= peak else after).append((abs(d_ratio), abs(d_stress), d_ratio))
+            print(f"{r['strain']:.4f}  {r['ratio']:.4f}  {ratio:.4f}  {d_ratio:+.2%}  {r['stress']:.0f}  "
+                  f"{stress:.0f}  {d_stress:+.2%}  {r['ev']:+.5f}  {ev:+.5f}")
+        if upto:
+            print(f"max_abs_d_ratio_to_peak {max(u[0] for u in upto):.4f}")
+            print(f"max_abs_d_stress_to_peak {max(u[1] for u in upto):.4f}")
+        if after:
+            print(f"mean_abs_d_ratio_after_peak {sum(a[0] for a in after) / len(after):.4f}")
+            print(f"mean_d_ratio_after_peak {sum(a[2] for a in after) / len(after):+.4f}")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) >= 3 and sys.argv[1] == "--iso":
+        ISO = int(sys.argv[2])
+        del sys.argv[1:3]
+    if len(sys.argv) >= 3 and sys.argv[1] == "show":
+        kind, rows = load(sys.argv[2])
+        print(f"# {kind}")
+        for r in rows:
+            print(f"{r['strain']:.4f} ratio {r['ratio']:.4f} stress {r['stress']:.0f} p {r['p']:.0f} "
+                  f"ev {r['ev']:+.5f} Z {r['coordination']:.3f} control_error {r['error']:.2e}")
+    elif len(sys.argv) >= 4 and sys.argv[1] == "compare":
+        compare(sys.argv[2], sys.argv[3:])
+    else:
+        sys.exit(__doc__)

@@ -1,0 +1,103 @@
+// fe2dem-rve, Drive = continuous (issue 35): the loading stage at a constant
+// strain rate in physical time. What DEM users call the quasi-static
+// response of a granular sample is the limit of loading at a constant rate
+// as the inertial number falls; a frictional packing relaxed at fixed strain
+// after every step loses stress, so the stepped drive is not that limit.
+// Here the RVE runs timed solves (fix rve/servo `timed_steps`: exactly
+// 'Control interval' DEM steps each, the frame moving at constant velocity
+// and its servo acting at every check, no relaxation stop), the driven
+// component of F advancing by rate x time, and the stress-controlled
+// components following by rate control between solves.
+#include "rate_stress_control.h"
+#include "rve_path_runner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+namespace fe2dem::rve_driver
+{
+template <int dim>
+std::pair<std::vector<int>, std::vector<double>> RvePathRunner<dim>::loading_controls() const
+{
+  const double p = prm_.path.pressure;
+  if (prm_.path.type == "simple shear")
+  {
+    if (prm_.path.shear_normal_stress)
+      return {{dim + 1}, {-p}}; // sigma22 through F22
+    return {};
+  }
+  std::vector<int> comps;
+  if (p > 0.0)
+    comps = dim == 2 ? std::vector<int>{0} : std::vector<int>{lateral[0], lateral[1]};
+  std::vector<double> targets(comps.size(), -p);
+  if (prm_.path.free_shear)
+    for (int c : dim == 2 ? std::vector<int>{1} : std::vector<int>{1, 2, 5})
+    {
+      comps.push_back(c);
+      targets.push_back(0.0);
+    }
+  return {comps, targets};
+}
+
+template <int dim>
+void RvePathRunner<dim>::run_continuous_stage()
+{
+  const bool shear = prm_.path.type == "simple shear";
+  const long n = prm_.path.control_interval;
+  const double interval_time = n * prm_.rve.time_step;
+  const double total = shear ? prm_.path.shear_strain : prm_.path.axial_strain;
+  const double row_strain = total / prm_.path.loading_steps;
+  // Whole timed solves per row, so that rows fall on the requested strains;
+  // the rate is rounded up to make that so.
+  const long per_row = std::max(
+    1L, std::lround(std::ceil(std::abs(row_strain) / (prm_.path.strain_rate * interval_time) - 1e-9)));
+  const double d_strain = row_strain / per_row;
+  std::cout << "continuous drive: " << per_row << " timed solves of " << n
+            << " DEM steps per row, strain rate " << std::abs(d_strain) / interval_time << " /s"
+            << std::endl;
+
+  const auto [comps, targets] = loading_controls();
+  // K_c: the loop is stable for K_c down to about a third of the true
+  // stiffness and only slower above it (rate_stress_control.h). The
+  // isotropic secant d p / d lambda (3 K_bulk) bounds the constrained
+  // modulus of a normal component from above, 0.3 of it the shear modulus;
+  // the per-component secants of the isotropic stage may be larger still.
+  std::vector<double> stiffness;
+  for (int c : comps)
+    stiffness.push_back(std::max(slopes_[c], (c % (dim + 1) == 0 ? 1.0 : 0.3) * slope_iso_));
+  // An interval may move a controlled component by at most ten drive
+  // increments: the drive's own strain bounds any sensible response to it.
+  RateStressControl<dim> control(comps, targets, stiffness, 10.0 * std::abs(d_strain));
+  const double scale = std::max(prm_.path.pressure, 1e-12);
+
+  const double F_axial_ic = F_[axial], F12_ic = F_[1];
+  rve_.set_timed_steps(n);
+  long interval = 0;
+  for (unsigned int row = 1; row <= prm_.path.loading_steps; ++row)
+  {
+    double error = 0.0;
+    for (long j = 0; j < per_row; ++j)
+    {
+      ++interval;
+      control.advance(F_, rve_.result().sigma);
+      if (shear)
+        F_[1] = F12_ic + interval * d_strain;
+      else
+        F_[axial] = F_axial_ic * (1.0 - interval * d_strain);
+      solve(F_);
+      drive_time_ += interval_time;
+      error = control.largest_error(rve_.result().sigma) / scale;
+    }
+    control_error_ = comps.empty() ? 0.0 : error;
+    write_row(rve_.result(), 0);
+  }
+  rve_.set_timed_steps(0);
+}
+
+// The rest of the class is instantiated in rve_path_runner.cpp.
+template void RvePathRunner<2>::run_continuous_stage();
+template void RvePathRunner<3>::run_continuous_stage();
+template std::pair<std::vector<int>, std::vector<double>> RvePathRunner<2>::loading_controls() const;
+template std::pair<std::vector<int>, std::vector<double>> RvePathRunner<3>::loading_controls() const;
+} // namespace fe2dem::rve_driver

@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# The continuous (constant-rate) RVE paths of issue 35 and the stepped ones
+# against them. Each case writes results/CASE/rve.csv (+ run.log); a case
+# whose rve.csv exists is skipped unless --force.
+#
+#   run.sh BUILD rates     triaxial and simple shear, small_3d and lsyf_1000,
+#                          at 0.25 and 0.125 /s (and timed_servo proportional
+#                          at both rates on small_3d triaxial)
+#   run.sh BUILD stepped   small_3d triaxial, stepped, 0.5 %, 0.25 %, 0.1 % steps
+#   run.sh BUILD tables    curves.py comparisons into results/*.txt
+#   run.sh BUILD all       the three in order
+#
+# BUILD: the build directory (e.g. build). Runs one case at a time.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+[[ $# -ge 2 ]] || { sed -n '2,13p' "$0"; exit 2; }
+build="$(cd "$1" && pwd)"; what="$2"; force="${3:-}"
+rve="$build/dealii_app/rve_driver/fe2dem-rve"
+[[ -x "$rve" ]] || { echo "run.sh: no fe2dem-rve in $build (build it first)"; exit 2; }
+results="$here/results"
+mkdir -p "$results"
+
+# case NAME BASE_PRM SED_EXPRESSION: BASE_PRM with the substitutions, run into results/NAME.
+case_run() {
+  local name="$1" base="$2" edit="$3" out="$results/$1"
+  if [[ -f "$out/rve.csv" && "$force" != "--force" ]]; then
+    echo "$name: exists (--force to run again)"; return
+  fi
+  mkdir -p "$out"
+  # relative paths of the parameter file are resolved against its folder: make them absolute
+  sed -e "s|\.\./\.\./|$root/|g" -e "$edit" "$here/$base" > "$out/case.prm"
+  local t0=$SECONDS
+  "$rve" "$out/case.prm" --output-directory "$out" > "$out/run.log" 2>&1 ||
+    { echo "$name: FAILED (see $out/run.log)"; return 1; }
+  echo "$name: $((SECONDS - t0)) s"
+}
+
+rate() { echo "s/^\( *set Strain rate *=\).*/\1 $1/"; }
+
+rates() {
+  for packing in small_3d lsyf_1000; do
+    for path in triaxial shear; do
+      for r in 0.25 0.125; do
+        case_run "${path}_${packing}_${r}" "${path}_${packing}.prm" "$(rate $r)"
+      done
+    done
+  done
+  for r in 0.25 0.125; do
+    case_run "triaxial_small_3d_${r}_proportional" triaxial_small_3d.prm \
+      "$(rate $r); s/^\( *set Frame membrane .*\)/\1\n  set Template variables = timed_servo proportional/"
+  done
+}
+
+stepped() {
+  # n steps of 5 %/n with the continuous runs' RVE settings
+  for n in 10 20 50; do
+    case_run "triaxial_small_3d_stepped_${n}" triaxial_small_3d.prm \
+      "s/^\( *set Drive *=\).*/\1 stepped/; s/^\( *set Loading steps *=\).*/\1 $n/"
+  done
+}
+
+tables() {
+  local c="$here/curves.py"
+  for packing in small_3d lsyf_1000; do
+    for path in triaxial shear; do
+      local a="$results/${path}_${packing}_0.125/rve.csv" b="$results/${path}_${packing}_0.25/rve.csv"
+      [[ -f "$a" && -f "$b" ]] && "$c" compare "$a" "$b" > "$results/rates_${path}_${packing}.txt"
+    done
+  done
+  local ref="$results/triaxial_small_3d_0.125/rve.csv" others=()
+  for n in 10 20 50; do
+    [[ -f "$results/triaxial_small_3d_stepped_${n}/rve.csv" ]] && others+=("$results/triaxial_small_3d_stepped_${n}/rve.csv")
+  done
+  [[ -f "$ref" && ${#others[@]} -gt 0 ]] && "$c" --iso 2 compare "$ref" "${others[@]}" > "$results/stepped_vs_continuous_small_3d.txt"
+  local p="$results/triaxial_small_3d_0.125_proportional/rve.csv"
+  [[ -f "$ref" && -f "$p" ]] && "$c" compare "$ref" "$p" "$results/triaxial_small_3d_0.25_proportional/rve.csv" \
+    > "$results/servo_integral_vs_proportional_small_3d.txt"
+  ls "$results"/*.txt
+}
+
+case "$what" in
+  rates) rates ;;
+  stepped) stepped ;;
+  tables) tables ;;
+  all) rates; stepped; tables ;;
+  *) sed -n '2,13p' "$0"; exit 2 ;;
+esac

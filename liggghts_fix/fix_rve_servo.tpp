@@ -501,7 +501,11 @@ void FixRveServo<dim>::add_affine_velocity()
   double** v = atom->v;
   double** omega = atom->omega;
 
-  const Tensor L = affine_velocity_gradient();
+  // A timed solve retargets its frame at every check (the servo), which
+  // restarts the frame's move; the mean motion stays that of F_before -> F
+  // over the whole solve (before this, in 3D the affine field vanished after
+  // the solve's first check: the retargeted path runs from F to F).
+  const Tensor L = timed_steps_ > 0 ? timed_velocity_gradient() : affine_velocity_gradient();
   const Rotation spin = fe2dem::axial_spin(L);
   affine_velocity_.assign(atom->nlocal, Vector{});
   for (int i = 0; i < atom->nlocal; ++i)

@@ -7,9 +7,12 @@ Usage:
 
 The loading stage starts at the last row of the isotropic stage: row
 --iso N (N = 'Isotropic steps'; N = 0 is the packing as relaxed) or, for a
-continuous drive, the row before the first with drive_time_s > 0. Strain: triaxial e_a = 1 - F33/F33_ic, simple shear gamma = F12.
+continuous drive, the row before the first with drive_time_s > 0. Strain: triaxial e_a = 1 - F_aa/F_aa,ic (a the axial direction: the normal
+component of F that moved most), simple shear gamma = F12. fe2dem's
+summary.csv of a one-element triaxial test (axial y) is read too: the
+loading rows after stage 1, strain from its axial_strain column.
 Stresses are Cauchy (sigma), tension positive; p = -tr(sigma)/3; triaxial
-ratio q/p with q = (sigma11 + sigma22)/2 - sigma33 (compression positive),
+ratio q/p with q = (lateral sum)/2 - sigma_aa (compression positive),
 simple shear ratio tau/p with tau = |sigma12|. Volumetric strain det F/det F_ic - 1.
 
 compare prints, per OTHER, the relative difference of the ratio and of the
@@ -28,13 +31,30 @@ def det3(F):
 ISO = None  # --iso N
 
 
+def load_summary(path, raw):
+    """fe2dem's summary.csv of a one-element triaxial test (axial y): the rows after stage 1."""
+    start = max(k for k, r in enumerate(raw) if r["stage"] == 1)
+    rows = []
+    for r in raw[start:]:
+        s11, s22, s33 = r["sigma11_mean"], r["sigma22_mean"], r["sigma33_mean"]
+        p = -(s11 + s22 + s33) / 3.0
+        rows.append(dict(strain=r["axial_strain"] - raw[start]["axial_strain"], ratio=((s11 + s33) / 2.0 - s22) / p,
+                         stress=-s22, p=p, ev=(1.0 + r["J_rel_mean"]) / (1.0 + raw[start]["J_rel_mean"]) - 1.0,
+                         coordination=r["coordination_mean"],
+                         error=float("nan")))
+    return "triaxial", rows
+
+
 def load(path):
     """(kind, rows) with rows of dicts: strain, ratio, stress, ev, p, coordination."""
     with open(path) as f:
         raw = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+    if "stress_ratio_mean" in raw[0]:
+        return load_summary(path, raw)
     if "F33" not in raw[0]:
         sys.exit(f"{path}: not a 3D rve.csv (no F33 column)")
-    shear = any(abs(r["F12"]) > 1e-12 for r in raw)
+    # simple shear drives F12; triaxial a normal component (Free shear moves F12 a little too)
+    shear = max(abs(r["F12"]) for r in raw) > max(abs(r[f"F{i}{i}"] - 1.0) for r in raw for i in (1, 2, 3))
     if ISO is not None:
         start = ISO
     elif any(r.get("drive_time_s", 0.0) > 0.0 for r in raw):
@@ -43,15 +63,19 @@ def load(path):
         sys.exit(f"{path}: a stepped path; give the isotropic row with --iso N")
     ic = raw[start]
     J_ic = det3([ic[f"F{i}{j}"] for i in (1, 2, 3) for j in (1, 2, 3)])
+    # the axial direction: the normal component of F that moved most in the loading stage
+    a = max((1, 2, 3), key=lambda i: abs(raw[-1][f"F{i}{i}"] / ic[f"F{i}{i}"] - 1.0))
+    lat = [i for i in (1, 2, 3) if i != a]
     rows = []
     for r in raw[start:]:
         s = [r[f"sigma{i}{j}"] for i in (1, 2, 3) for j in (1, 2, 3)]
         p = -(s[0] + s[4] + s[8]) / 3.0
+        diag = {i: s[4 * (i - 1)] for i in (1, 2, 3)}
         if shear:
             strain, stress = r["F12"] - ic["F12"], abs(s[1])
         else:
-            strain, stress = 1.0 - r["F33"] / ic["F33"], -s[8]
-        ratio = stress / p if shear else ((s[0] + s[4]) / 2.0 - s[8]) / p
+            strain, stress = 1.0 - r[f"F{a}{a}"] / ic[f"F{a}{a}"], -diag[a]
+        ratio = stress / p if shear else ((diag[lat[0]] + diag[lat[1]]) / 2.0 - diag[a]) / p
         J = det3([r[f"F{i}{j}"] for i in (1, 2, 3) for j in (1, 2, 3)])
         rows.append(dict(strain=strain, ratio=ratio, stress=stress, p=p, ev=J / J_ic - 1.0,
                          coordination=r["coordination"], error=r.get("control_error", float("nan"))))

@@ -7,14 +7,17 @@
 #                          at 0.25 and 0.125 /s (and timed_servo proportional
 #                          at both rates on small_3d triaxial)
 #   run.sh BUILD stepped   small_3d triaxial, stepped, 0.5 %, 0.25 %, 0.1 % steps
+#   run.sh BUILD one_element  the continuous reference of benchmarks/one_element_3d
+#                          (lsyf_1000, axial y, Inner start affine) at 0.25 and
+#                          0.125 /s and keep at 0.25 /s
 #   run.sh BUILD tables    curves.py comparisons into results/*.txt
-#   run.sh BUILD all       the three in order
+#   run.sh BUILD all       the four in order
 #
 # BUILD: the build directory (e.g. build). Runs one case at a time.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-[[ $# -ge 2 ]] || { sed -n '2,13p' "$0"; exit 2; }
+[[ $# -ge 2 ]] || { sed -n '2,16p' "$0"; exit 2; }
 build="$(cd "$1" && pwd)"; what="$2"; force="${3:-}"
 rve="$build/dealii_app/rve_driver/fe2dem-rve"
 [[ -x "$rve" ]] || { echo "run.sh: no fe2dem-rve in $build (build it first)"; exit 2; }
@@ -60,6 +63,14 @@ stepped() {
   done
 }
 
+one_element() {
+  for r in 0.25 0.125; do
+    case_run "one_element_lsyf_1000_${r}" one_element_lsyf_1000.prm "$(rate $r)"
+  done
+  case_run "one_element_lsyf_1000_0.25_keep" one_element_lsyf_1000.prm \
+    "s/^\( *set Inner start *=\).*/\1 keep/"
+}
+
 tables() {
   local c="$here/curves.py"
   for packing in small_3d lsyf_1000; do
@@ -76,6 +87,11 @@ tables() {
   local p="$results/triaxial_small_3d_0.125_proportional/rve.csv"
   [[ -f "$ref" && -f "$p" ]] && "$c" compare "$ref" "$p" "$results/triaxial_small_3d_0.25_proportional/rve.csv" \
     > "$results/servo_integral_vs_proportional_small_3d.txt"
+  local one="$root/benchmarks/one_element_3d/results/lsyf_1000" oref="$results/one_element_lsyf_1000_0.125/rve.csv"
+  [[ -f "$oref" ]] && "$c" compare "$oref" "$results/one_element_lsyf_1000_0.25/rve.csv" \
+    "$results/one_element_lsyf_1000_0.25_keep/rve.csv" "$one/macro_summary.csv" "$one/macro_10_steps_summary.csv" \
+    > "$results/one_element_stepped_vs_continuous.txt"
+  [[ -f "$oref" ]] && "$c" --iso 2 compare "$oref" "$one/rve_100_steps.csv" >> "$results/one_element_stepped_vs_continuous.txt"
   ls "$results"/*.txt
 }
 
@@ -83,6 +99,7 @@ case "$what" in
   rates) rates ;;
   stepped) stepped ;;
   tables) tables ;;
-  all) rates; stepped; tables ;;
-  *) sed -n '2,13p' "$0"; exit 2 ;;
+  one_element) one_element ;;
+  all) rates; stepped; one_element; tables ;;
+  *) sed -n '2,16p' "$0"; exit 2 ;;
 esac

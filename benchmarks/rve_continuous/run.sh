@@ -92,6 +92,15 @@ tables() {
     "$results/one_element_lsyf_1000_0.25_keep/rve.csv" "$one/macro_summary.csv" "$one/macro_10_steps_summary.csv" \
     > "$results/one_element_stepped_vs_continuous.txt"
   [[ -f "$oref" ]] && "$c" --iso 2 compare "$oref" "$one/rve_100_steps.csv" >> "$results/one_element_stepped_vs_continuous.txt"
+  # against YADE's periodic cell (benchmarks/yade_periodic/run_3d.sh makes its results_3d)
+  local yade=(); for packing in small_3d lsyf_1000; do for path in triaxial shear; do
+    for r in 0.25 0.125; do
+      [[ -f "$results/${path}_${packing}_${r}/rve.csv" ]] && yade+=(--rve "${packing}_${path}=$results/${path}_${packing}_${r}/rve.csv")
+    done; done; done
+  local p25="$results/triaxial_small_3d_0.25_proportional/rve.csv"
+  [[ -f "$p25" ]] && yade+=(--rve "small_3d_triaxial=$p25")
+  /usr/bin/python3 "$root/benchmarks/yade_periodic/compare_3d.py" "${yade[@]}" \
+    --plot "$results/vs_yade.png" --tables "$results/vs_yade.md" > "$results/vs_yade.txt"
   ls "$results"/*.txt
 }
 

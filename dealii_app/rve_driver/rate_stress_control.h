@@ -15,10 +15,11 @@
  * solve), K_c an estimate of d sigma_c / d F_c, p_c the running mean of the
  * recent increments. p_c is the integral action: a steady dilatancy is
  * followed with zero steady error. The measured stress lags the increment by
- * about half an interval; with g = 0.5 and m = 0.8 the loop is damped for any
- * K_c from the true stiffness up to several times it (an overestimate only
- * slows the correction), so K_c from the elastic (isotropic-stage) secant is
- * safe as the packing softens.
+ * about half an interval; with g = 0.5 and m = 0.8 the loop converges for
+ * any K_c from about a third of the true stiffness upwards (an overestimate
+ * only slows the correction; at six times too low it diverges): K_c from
+ * the elastic (isotropic-stage) secant stays safe as the packing softens.
+ * tests/test_rate_stress_control.cpp checks this on a model of the lag.
  */
 #pragma once
 

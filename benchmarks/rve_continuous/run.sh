@@ -6,10 +6,12 @@
 #   run.sh BUILD rates     triaxial and simple shear, small_3d and lsyf_1000,
 #                          at 0.25 and 0.125 /s (and timed_servo proportional
 #                          at both rates on small_3d triaxial)
-#   run.sh BUILD stepped   small_3d triaxial, stepped, 0.5 %, 0.25 %, 0.1 % steps
+#   run.sh BUILD stepped   small_3d triaxial, stepped: 0.5 % and 0.25 % steps to 5 %, 0.1 % to 2.5 %
 #   run.sh BUILD one_element  the continuous reference of benchmarks/one_element_3d
 #                          (lsyf_1000, axial y, Inner start affine) at 0.25 and
 #                          0.125 /s and keep at 0.25 /s
+#   run.sh BUILD biaxial_2d  2D: lbs_ref biaxial (benchmarks/frame_vs_periodic/biaxial.prm)
+#                          continuous at 0.1 /s, the rate of the 2D YADE reference
 #   run.sh BUILD tables    curves.py comparisons into results/*.txt
 #   run.sh BUILD all       the four in order
 #
@@ -17,7 +19,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-[[ $# -ge 2 ]] || { sed -n '2,16p' "$0"; exit 2; }
+[[ $# -ge 2 ]] || { sed -n '2,18p' "$0"; exit 2; }
 build="$(cd "$1" && pwd)"; what="$2"; force="${3:-}"
 rve="$build/dealii_app/rve_driver/fe2dem-rve"
 [[ -x "$rve" ]] || { echo "run.sh: no fe2dem-rve in $build (build it first)"; exit 2; }
@@ -56,10 +58,11 @@ rates() {
 }
 
 stepped() {
-  # n steps of 5 %/n with the continuous runs' RVE settings
-  for n in 10 20 50; do
+  # steps of 0.5 % and 0.25 % to 5 %, of 0.1 % to 2.5 %, with the continuous runs' RVE settings
+  for case in "10 0.05" "20 0.05" "25 0.025"; do
+    read -r n strain <<<"$case"
     case_run "triaxial_small_3d_stepped_${n}" triaxial_small_3d.prm \
-      "s/^\( *set Drive *=\).*/\1 stepped/; s/^\( *set Loading steps *=\).*/\1 $n/"
+      "s/^\( *set Drive *=\).*/\1 stepped/; s/^\( *set Loading steps *=\).*/\1 $n/; s/^\( *set Axial strain *=\).*/\1 $strain/"
   done
 }
 
@@ -71,6 +74,41 @@ one_element() {
     "s/^\( *set Inner start *=\).*/\1 keep/"
 }
 
+biaxial_2d() {
+  local name=biaxial_2d_lbs_ref_0.1 out="$results/biaxial_2d_lbs_ref_0.1"
+  if [[ -f "$out/rve.csv" && "$force" != "--force" ]]; then echo "$name: exists"; return; fi
+  mkdir -p "$out"
+  sed -e "s|\.\./\.\./|$root/|g" -e "s|^set Output directory.*|set Output directory = $out|" \
+    -e 's/^\( *set Isotropic control.*\)/\1\n  set Drive = continuous\n  set Strain rate = 0.1\n  set Max stress iterations = 50/' \
+    "$root/benchmarks/frame_vs_periodic/biaxial.prm" > "$out/case.prm"
+  local t0=$SECONDS
+  "$rve" "$out/case.prm" > "$out/run.log" 2>&1 || { echo "$name: FAILED"; return 1; }
+  echo "$name: $((SECONDS - t0)) s"
+}
+
+# 2D rve.csv against the YADE biaxial CSV: sigma22 and the stress ratio at YADE's 0.5 % rows.
+compare_2d() {
+  /usr/bin/python3 - "$1" "$2" <<'PY'
+import csv, sys
+rve = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(sys.argv[1]))]
+ic = next(k for k, r in enumerate(rve) if r["drive_time_s"] > 0) - 1
+yade = [r for r in csv.DictReader(l for l in open(sys.argv[2]) if not l.startswith("#")) if r["stage"] == "biaxial"]
+print("strain  yade_ratio  rve_ratio  d_ratio  yade_s22  rve_s22  d_s22")
+for y in yade:
+    e = float(y["axial_strain"])
+    for a, b in zip(rve[ic:], rve[ic + 1:]):
+        ea, eb = 1 - a["F22"] / rve[ic]["F22"], 1 - b["F22"] / rve[ic]["F22"]
+        if ea - 1e-9 <= e <= eb + 1e-9 and e > 1e-6:
+            t = (e - ea) / (eb - ea)
+            s11 = a["sigma11"] + t * (b["sigma11"] - a["sigma11"])
+            s22 = a["sigma22"] + t * (b["sigma22"] - a["sigma22"])
+            ratio = abs((s11 - s22) / (s11 + s22))
+            yr, ys = float(y["stress_ratio"]), float(y["sigma22_Npm"])
+            print(f"{e:.4f}  {yr:.4f}  {ratio:.4f}  {ratio / yr - 1:+.2%}  {ys:.0f}  {s22:.0f}  {s22 / ys - 1:+.2%}")
+            break
+PY
+}
+
 tables() {
   local c="$here/curves.py"
   for packing in small_3d lsyf_1000; do
@@ -80,7 +118,7 @@ tables() {
     done
   done
   local ref="$results/triaxial_small_3d_0.125/rve.csv" others=()
-  for n in 10 20 50; do
+  for n in 10 20 25; do
     [[ -f "$results/triaxial_small_3d_stepped_${n}/rve.csv" ]] && others+=("$results/triaxial_small_3d_stepped_${n}/rve.csv")
   done
   [[ -f "$ref" && ${#others[@]} -gt 0 ]] && "$c" --iso 2 compare "$ref" "${others[@]}" > "$results/stepped_vs_continuous_small_3d.txt"
@@ -101,6 +139,8 @@ tables() {
   [[ -f "$p25" ]] && yade+=(--rve "small_3d_triaxial=$p25")
   /usr/bin/python3 "$root/benchmarks/yade_periodic/compare_3d.py" "${yade[@]}" \
     --plot "$results/vs_yade.png" --tables "$results/vs_yade.md" > "$results/vs_yade.txt"
+  local b2="$results/biaxial_2d_lbs_ref_0.1/rve.csv"
+  [[ -f "$b2" ]] && compare_2d "$b2" "$root/benchmarks/yade_periodic/results/lbs_ref_rate1.csv" > "$results/biaxial_2d_vs_yade.txt"
   ls "$results"/*.txt
 }
 
@@ -109,6 +149,7 @@ case "$what" in
   stepped) stepped ;;
   tables) tables ;;
   one_element) one_element ;;
-  all) rates; stepped; one_element; tables ;;
-  *) sed -n '2,16p' "$0"; exit 2 ;;
+  biaxial_2d) biaxial_2d ;;
+  all) rates; stepped; one_element; biaxial_2d; tables ;;
+  *) sed -n '2,18p' "$0"; exit 2 ;;
 esac

@@ -49,6 +49,12 @@
  *                              a centre crosses a triangle's plane
  *                              (fix_rve_servo_membrane_3d.tpp). Needs kn or Debian's
  *                              hertz model. Default yes (see README)
+ *     timed_servo integral|proportional  the frame servo of timed solves: with integral
+ *                              action (each correction also carries the running mean of
+ *                              the recent ones, so a steady drift of the balanced
+ *                              fluctuations is followed without a steady imbalance) or
+ *                              proportional (issue 18; the frame lags by an amount that
+ *                              grows with the loading rate). Default integral
  *
  * `fix_modify ID F f11 f12 f21 f22` (3D: nine values) starts a new solve under a new F;
  * `fix_modify ID max_steps N` changes the step budget (not kept in restarts). The

@@ -30,6 +30,9 @@ void FixRveServo<dim>::begin_solve(const Tensor* F)
     for (auto& t : theta_pair_)
       t = Rotation{};
     theta_corner_ = Rotation{};
+    drift_w_.clear(); // the timed servo's drift follows w (fix_rve_servo_timed.tpp)
+    drift_theta_pair_.clear();
+    drift_theta_corner_ = Rotation{};
   }
   status_ = running;
   failure_reason_.clear();

@@ -130,15 +130,21 @@ tables() {
     "$results/one_element_lsyf_1000_0.25_keep/rve.csv" "$one/macro_summary.csv" "$one/macro_10_steps_summary.csv" \
     > "$results/one_element_stepped_vs_continuous.txt"
   [[ -f "$oref" ]] && "$c" --iso 2 compare "$oref" "$one/rve_100_steps.csv" >> "$results/one_element_stepped_vs_continuous.txt"
-  # against YADE's periodic cell (benchmarks/yade_periodic/run_3d.sh makes its results_3d)
-  local yade=(); for packing in small_3d lsyf_1000; do for path in triaxial shear; do
-    for r in 0.25 0.125; do
+  # against YADE's periodic cell (benchmarks/yade_periodic/run_3d.sh makes its results_3d):
+  # one call per RVE rate (the plot holds one RVE curve per packing and path), and the
+  # proportional servo apart
+  local r suffix
+  for r in 0.125 0.25; do
+    local yade=() suffix=""; [[ $r == 0.25 ]] && suffix="_0.25"
+    for packing in small_3d lsyf_1000; do for path in triaxial shear; do
       [[ -f "$results/${path}_${packing}_${r}/rve.csv" ]] && yade+=(--rve "${packing}_${path}=$results/${path}_${packing}_${r}/rve.csv")
-    done; done; done
+    done; done
+    /usr/bin/python3 "$root/benchmarks/yade_periodic/compare_3d.py" "${yade[@]}" \
+      --plot "$results/vs_yade$suffix.png" --tables "$results/vs_yade$suffix.md" > "$results/vs_yade$suffix.txt"
+  done
   local p25="$results/triaxial_small_3d_0.25_proportional/rve.csv"
-  [[ -f "$p25" ]] && yade+=(--rve "small_3d_triaxial=$p25")
-  /usr/bin/python3 "$root/benchmarks/yade_periodic/compare_3d.py" "${yade[@]}" \
-    --plot "$results/vs_yade.png" --tables "$results/vs_yade.md" > "$results/vs_yade.txt"
+  [[ -f "$p25" ]] && /usr/bin/python3 "$root/benchmarks/yade_periodic/compare_3d.py" --rve "small_3d_triaxial=$p25" \
+    --plot "$results/vs_yade_proportional.png" --tables "$results/vs_yade_proportional.md" > "$results/vs_yade_proportional.txt"
   local b2="$results/biaxial_2d_lbs_ref_0.1/rve.csv"
   [[ -f "$b2" ]] && compare_2d "$b2" "$root/benchmarks/yade_periodic/results/lbs_ref_rate1.csv" > "$results/biaxial_2d_vs_yade.txt"
   ls "$results"/*.txt

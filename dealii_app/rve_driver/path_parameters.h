@@ -30,9 +30,10 @@ struct PathParameters
   bool axial_y = false;      ///< triaxial (3D): compress along y instead of z (fe2dem's vertical axis)
   bool isotropic_components; ///< isotropic stage: sigma11 = sigma22 = -p through F11, F22 (F12 = 0)
   unsigned int max_stress_iterations;
-  /// stepped: each load step relaxed and servo-converged at its F ([LBS]);
-  /// continuous: the loading stage at a constant strain rate, as timed solves.
-  bool continuous = false;
+  /// continuous (default): the loading stage at a constant strain rate, as timed
+  /// solves; stepped: each load step relaxed and servo-converged at its F ([LBS]).
+  /// False for isotropic and table paths, which have no loading stage.
+  bool continuous = true;
   double strain_rate;             ///< continuous: axial compression or shear rate [1/s]
   unsigned int control_interval;  ///< continuous: DEM steps per timed solve (stress control update)
   bool shear_normal_stress;       ///< simple shear: hold sigma22 = -Pressure through F22

@@ -5,7 +5,8 @@
 #
 #   run.sh BUILD rates     triaxial and simple shear, small_3d and lsyf_1000,
 #                          at 0.25 and 0.125 /s (and timed_servo proportional
-#                          at both rates on small_3d triaxial)
+#                          at both rates on small_3d triaxial), lsyf_4096
+#                          triaxial at 0.25 /s to 3 %
 #   run.sh BUILD stepped   small_3d triaxial, stepped: 0.5 % and 0.25 % steps to 5 %, 0.1 % to 2.5 %
 #   run.sh BUILD one_element  the continuous reference of benchmarks/one_element_3d
 #                          (lsyf_1000, axial y, Inner start affine) at 0.25 and
@@ -51,6 +52,7 @@ rates() {
       done
     done
   done
+  case_run "triaxial_lsyf_4096_0.25" triaxial_lsyf_4096.prm ""
   for r in 0.25 0.125; do
     case_run "triaxial_small_3d_${r}_proportional" triaxial_small_3d.prm \
       "$(rate $r); s/^\( *set Frame membrane .*\)/\1\n  set Template variables = timed_servo proportional/"

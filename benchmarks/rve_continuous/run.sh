@@ -6,7 +6,7 @@
 #   run.sh BUILD rates     triaxial and simple shear, small_3d and lsyf_1000,
 #                          at 0.25 and 0.125 /s (and timed_servo proportional
 #                          at both rates on small_3d triaxial), lsyf_4096
-#                          triaxial at 0.25 /s to 3 %
+#                          triaxial at 0.25 and 0.125 /s to 3 %
 #   run.sh BUILD stepped   small_3d triaxial, stepped: 0.5 % and 0.25 % steps to 5 %, 0.1 % to 2.5 %
 #   run.sh BUILD one_element  the continuous reference of benchmarks/one_element_3d
 #                          (lsyf_1000, axial y, Inner start affine) at 0.25 and
@@ -52,7 +52,9 @@ rates() {
       done
     done
   done
-  case_run "triaxial_lsyf_4096_0.25" triaxial_lsyf_4096.prm ""
+  for r in 0.25 0.125; do
+    case_run "triaxial_lsyf_4096_${r}" triaxial_lsyf_4096.prm "$(rate $r)"
+  done
   for r in 0.25 0.125; do
     case_run "triaxial_small_3d_${r}_proportional" triaxial_small_3d.prm \
       "$(rate $r); s/^\( *set Frame membrane .*\)/\1\n  set Template variables = timed_servo proportional/"
@@ -113,7 +115,7 @@ PY
 
 tables() {
   local c="$here/curves.py"
-  for packing in small_3d lsyf_1000; do
+  for packing in small_3d lsyf_1000 lsyf_4096; do
     for path in triaxial shear; do
       local a="$results/${path}_${packing}_0.125/rve.csv" b="$results/${path}_${packing}_0.25/rve.csv"
       [[ -f "$a" && -f "$b" ]] && "$c" compare "$a" "$b" > "$results/rates_${path}_${packing}.txt"
@@ -138,7 +140,7 @@ tables() {
   local r suffix
   for r in 0.125 0.25; do
     local yade=() suffix=""; [[ $r == 0.25 ]] && suffix="_0.25"
-    for packing in small_3d lsyf_1000; do for path in triaxial shear; do
+    for packing in small_3d lsyf_1000 lsyf_4096; do for path in triaxial shear; do
       [[ -f "$results/${path}_${packing}_${r}/rve.csv" ]] && yade+=(--rve "${packing}_${path}=$results/${path}_${packing}_${r}/rve.csv")
     done; done
     /usr/bin/python3 "$root/benchmarks/yade_periodic/compare_3d.py" "${yade[@]}" \

@@ -98,6 +98,10 @@ import time
 from yade import *  # noqa: F401,F403  (O, engines, Vector3, Matrix3, ...)
 from yade import utils
 
+# yade -x: __file__ is yade's launcher, sys.argv[0] this script
+sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
+import yade_common  # noqa: E402
+
 # ------------------------------------------------------------------ parameters
 KN = 1.0e7           # N/m, normal contact stiffness (constant)
 KS = 2.0e6           # N/m, tangential contact stiffness (constant)
@@ -125,11 +129,7 @@ REC_TOL = 2.5e-3     # relative lateral stress error allowed at a record
 HOLD_MAX = 50000     # steps, max pause at a record point
 
 
-def fail(msg):
-    print("biaxial_periodic: ERROR: " + msg, file=sys.stderr)
-    sys.stdout.flush()
-    os._exit(2)
-
+fail = yade_common.make_fail("biaxial_periodic")
 
 # ------------------------------------------------------------------ arguments
 if len(sys.argv) < 4:
@@ -137,40 +137,15 @@ if len(sys.argv) < 4:
 PACKING, OUTCSV, RATE_FACTOR = sys.argv[1], sys.argv[2], float(sys.argv[3])
 # optional overrides of the numeric parameters above, for checks only
 # (e.g. DT=5e-7 TAU=1e-4); the reference runs use none.
-OVERRIDES = []
-for a in sys.argv[4:]:
-    k, _, v = a.partition("=")
-    if k not in globals() or k.upper() != k or not isinstance(globals()[k], (int, float)):
-        fail("unknown parameter override " + a)
-    globals()[k] = type(globals()[k])(float(v))
-    OVERRIDES.append("%s=%s" % (k, globals()[k]))
+OVERRIDES = yade_common.apply_overrides(sys.argv[4:], globals(), fail)
 RATE = BASE_RATE * RATE_FACTOR
 TRACECSV = os.path.splitext(OUTCSV)[0] + "_trace.csv"
 
 
 # ------------------------------------------------------------------ read packing
 def read_packing(path):
-    box, atoms, sec = {}, [], None
-    natoms = None
-    with open(path) as f:
-        for ln in f:
-            t = ln.split()
-            if not t:
-                continue
-            if len(t) == 2 and t[1] == "atoms":
-                natoms = int(t[0])
-            elif len(t) == 4 and t[2] in ("xlo", "ylo", "zlo"):
-                box[t[2][0]] = (float(t[0]), float(t[1]))
-            elif t[0] in ("Atoms", "Velocities", "Bonds", "Masses"):
-                sec = t[0]
-            elif sec == "Atoms" and len(t) >= 7:
-                # id type diameter density x y z [ix iy iz]
-                atoms.append((int(t[0]), 0.5 * float(t[2]), float(t[4]), float(t[5])))
-    if natoms is None or len(atoms) != natoms:
-        fail(f"{path}: read {len(atoms)} atoms, header says {natoms}")
-    if "x" not in box or "y" not in box:
-        fail(f"{path}: no xlo/ylo box lines")
-    return box, sorted(atoms)
+    box, atoms = yade_common.read_lammps_data(path, fail, "xy")
+    return box, [(aid, r, x, y) for (aid, r, _, x, y, _) in atoms]
 
 
 box, atoms = read_packing(PACKING)
@@ -299,21 +274,8 @@ def row(stage, hold=0):
             "Lx_m": lx, "Ly_m": ly, "hold_steps": hold}
 
 
-def fmt(v):
-    if isinstance(v, str):
-        return v
-    if isinstance(v, int):
-        return str(v)
-    return "%.10g" % v
-
-
 def write_csv(path, rows, header_lines):
-    with open(path, "w") as f:
-        for h in header_lines:
-            f.write("# " + h + "\n")
-        f.write(",".join(COLUMNS) + "\n")
-        for r in rows:
-            f.write(",".join(fmt(r[c]) for c in COLUMNS) + "\n")
+    yade_common.write_csv(path, rows, header_lines, COLUMNS)
 
 
 def log(msg):
@@ -330,8 +292,7 @@ def show(r):
 
 # ------------------------------------------------------------------ servo
 def pi_rate(err, integ, k):
-    d = (err + integ / TI) / (k * TAU)
-    return max(-DMAX, min(DMAX, d))
+    return yade_common.pi_rate(err, integ, k, TI, TAU, DMAX)
 
 
 def set_velgrad(dx, dy):

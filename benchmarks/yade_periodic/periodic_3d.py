@@ -100,6 +100,10 @@ import time
 from yade import *  # noqa: F401,F403  (O, engines, Vector3, Matrix3, ...)
 from yade import utils
 
+# yade -x: __file__ is yade's launcher, sys.argv[0] this script
+sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
+import yade_common  # noqa: E402
+
 # ------------------------------------------------------------------ parameters
 KN = 1.0e5           # N/m, normal contact stiffness (constant)
 KS = 2.5e4           # N/m, tangential contact stiffness (constant)
@@ -126,12 +130,7 @@ HOLD_MAX = 50000     # steps, max pause at a record point
 SLIDE_TOL = 0.999    # a contact slides if |Fs| >= SLIDE_TOL * MU * Fn
 
 
-def fail(msg):
-    print("periodic_3d: ERROR: " + msg, file=sys.stderr)
-    sys.stdout.flush()
-    sys.stderr.flush()
-    os._exit(2)
-
+fail = yade_common.make_fail("periodic_3d")
 
 # ------------------------------------------------------------------ arguments
 if len(sys.argv) < 5:
@@ -139,41 +138,14 @@ if len(sys.argv) < 5:
 PACKING, OUTCSV, PATH, RATE_FACTOR = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4])
 if PATH not in ("triaxial", "shear"):
     fail("PATH must be triaxial or shear, not " + PATH)
-OVERRIDES = []
-for a in sys.argv[5:]:
-    k, _, v = a.partition("=")
-    if k not in globals() or k.upper() != k or not isinstance(globals()[k], (int, float)):
-        fail("unknown parameter override " + a)
-    globals()[k] = type(globals()[k])(float(v))
-    OVERRIDES.append("%s=%s" % (k, globals()[k]))
+OVERRIDES = yade_common.apply_overrides(sys.argv[5:], globals(), fail)
 RATE = BASE_RATE * RATE_FACTOR
 TRACECSV = os.path.splitext(OUTCSV)[0] + "_trace.csv"
 
 
 # ------------------------------------------------------------------ read packing
 def read_packing(path):
-    box, atoms, sec = {}, [], None
-    natoms = None
-    with open(path) as f:
-        for ln in f:
-            t = ln.split()
-            if not t:
-                continue
-            if len(t) == 2 and t[1] == "atoms":
-                natoms = int(t[0])
-            elif len(t) == 4 and t[2] in ("xlo", "ylo", "zlo"):
-                box[t[2][0]] = (float(t[0]), float(t[1]))
-            elif t[0] in ("Atoms", "Velocities", "Bonds", "Masses"):
-                sec = t[0]
-            elif sec == "Atoms" and len(t) >= 7:
-                # id type diameter density x y z [ix iy iz]
-                atoms.append((int(t[0]), 0.5 * float(t[2]), float(t[3]),
-                              float(t[4]), float(t[5]), float(t[6])))
-    if natoms is None or len(atoms) != natoms:
-        fail(f"{path}: read {len(atoms)} atoms, header says {natoms}")
-    if any(c not in box for c in "xyz"):
-        fail(f"{path}: no xlo/ylo/zlo box lines")
-    return box, sorted(atoms)
+    return yade_common.read_lammps_data(path, fail, "xyz")
 
 
 box, atoms = read_packing(PACKING)
@@ -313,14 +285,6 @@ def row(stage, hold=0):
             "Lx_m": h[0, 0], "Ly_m": h[1, 1], "Lz_m": h[2, 2], "Hxy_m": h[0, 1], "hold_steps": hold}
 
 
-def fmt(v):
-    if isinstance(v, str):
-        return v
-    if isinstance(v, int):
-        return str(v)
-    return "%.10g" % v
-
-
 def header_lines(final):
     h = ["YADE %s periodic 3D %s reference (benchmarks/yade_periodic/periodic_3d.py)" % (version, PATH),
          "packing %s N %d Lx0 %.10g Ly0 %.10g Lz0 %.10g rho %g d_mean %.6g" % (PACKING, N, L0[0], L0[1], L0[2], RHO, D_MEAN),
@@ -338,12 +302,7 @@ def header_lines(final):
 
 
 def write_csv(path, rows, hdr):
-    with open(path, "w") as f:
-        for h in hdr:
-            f.write("# " + h + "\n")
-        f.write(",".join(COLUMNS) + "\n")
-        for r in rows:
-            f.write(",".join(fmt(r[c]) for c in COLUMNS) + "\n")
+    yade_common.write_csv(path, rows, hdr, COLUMNS)
 
 
 def write_partial():
@@ -366,8 +325,7 @@ def show(r):
 
 # ------------------------------------------------------------------ servo
 def pi_rate(err, integ, k):
-    d = (err + integ / TI) / (k * TAU)
-    return max(-DMAX, min(DMAX, d))
+    return yade_common.pi_rate(err, integ, k, TI, TAU, DMAX)
 
 
 def set_velgrad(dxx, dyy, dzz, dxy=0.0):

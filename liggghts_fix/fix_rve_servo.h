@@ -276,8 +276,10 @@ private:
   Tensor timed_velocity_gradient() const;
   /// A check of a timed solve: homogenise, filter, finish at its last step.
   void timed_check(long step);
-  /// The servo correction of a timed solve, with the integral action of timed_servo integral.
-  void apply_timed_servo_correction();
+  /// timed_servo integral: @p value moved from @p before by a servo correction also
+  /// takes the running mean @p drift of the recent moves, which it then updates.
+  template <class T>
+  static void carry_drift(T& value, const T& before, T& drift);
   /// The contact of contacts_ with the largest overlap, for messages.
   std::string describe_largest_overlap() const;
   /// Stops with an error if the packing's centres do not fit the dimension (z = 0 in 2D).

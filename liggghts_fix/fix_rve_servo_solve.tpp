@@ -384,6 +384,13 @@ void FixRveServo<dim>::apply_servo_correction()
   auto adapt = [](double& factor, double now, double before) {
     factor = now * before < 0.0 ? std::max(0.5 * factor, min_factor) : std::min(1.0, 1.2 * factor);
   };
+  // timed solves with timed_servo integral: integral action (carry_drift, fix_rve_servo_timed.tpp)
+  const bool integral = timed_steps_ > 0 && timed_integral_;
+  if (integral)
+  {
+    drift_w_.resize(w_.size(), Vector{});
+    drift_theta_pair_.resize(theta_pair_.size(), Rotation{});
+  }
   for (std::size_t e = 0; e < frame_.groups.size(); ++e)
   {
     const auto& g = frame_.groups[e];
@@ -391,6 +398,8 @@ void FixRveServo<dim>::apply_servo_correction()
     const double M = atom->rmass[i], R = atom->radius[i];
     const Vector da = group_sum(frame_force_, g);
     const Rotation dm = group_sum(frame_moment_, g);
+    const Vector w_before = w_[e];
+    const Rotation theta_before = theta_pair_[e];
     ServoMemory& mem = servo_memory_[e];
     for (int k = 0; k < dim; ++k)
     {
@@ -402,6 +411,11 @@ void FixRveServo<dim>::apply_servo_correction()
       adapt(mem.moment_factor[c], dm[c], mem.last_dm[c]);
       theta_pair_[e][c] -= mem.moment_factor[c] * gain_m_ * dt2 / (M * R * R) * dm[c];
     }
+    if (integral)
+    {
+      carry_drift(w_[e], w_before, drift_w_[e]);
+      carry_drift(theta_pair_[e], theta_before, drift_theta_pair_[e]);
+    }
     mem.last_da = da;
     mem.last_dm = dm;
   }
@@ -410,12 +424,15 @@ void FixRveServo<dim>::apply_servo_correction()
   for (int k : frame_.corners)
     dmc = dmc + frame_moment_[k];
   ServoMemory& mc = servo_memory_corner_;
+  const Rotation corner_before = theta_corner_;
   for (int c = 0; c < n_spin; ++c)
   {
     adapt(mc.moment_factor[c], dmc[c], mc.last_dm[c]);
     theta_corner_[c] -= mc.moment_factor[c] * gain_m_ * dt2 /
                         (atom->rmass[ic] * std::pow(atom->radius[ic], 2)) * dmc[c];
   }
+  if (integral)
+    carry_drift(theta_corner_, corner_before, drift_theta_corner_);
   mc.last_dm = dmc;
   ++result_.servo_iterations;
   schedule_frame_move(F_);

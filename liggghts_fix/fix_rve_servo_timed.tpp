@@ -13,7 +13,7 @@
 // steady loading the balanced fluctuations drift at a steady rate, and a
 // proportional servo follows a drift only with a steady imbalance, a frame
 // that lags behind its balanced place and a stress that grows with the
-// rate (apply_timed_servo_correction). Cundall
+// rate (carry_drift). Cundall
 // damping acts on the fluctuation velocity v - L (x - origin), L the
 // velocity gradient of the mean motion (as YADE's NewtonIntegrator does in
 // periodic cells): damping the absolute velocity of particles that flow
@@ -62,12 +62,12 @@ void FixRveServo<dim>::timed_check(long step)
   if (step < timed_steps_)
   {
     const Tensor affine = affine_step_; // inner_start affine keeps its rate
-    apply_timed_servo_correction();     // retargets the frame: F X + w, new w
+    apply_servo_correction();           // retargets the frame: F X + w, new w
     move_steps_ = static_cast<int>(timed_steps_ - step);
     affine_step_ = affine;
     return;
   }
-  apply_timed_servo_correction(); // the next solve starts towards the corrected w
+  apply_servo_correction(); // the next solve starts towards the corrected w
   const double w = 1.0 / timed_samples_;
   result_.P = w * timed_P_sum_;
   result_.sigma = w * timed_sigma_sum_;
@@ -75,7 +75,8 @@ void FixRveServo<dim>::timed_check(long step)
   status_ = converged;
 }
 
-// Integral action: each correction also carries the running mean d of the
+// Integral action (timed_servo integral; called by apply_servo_correction
+// in timed solves): each correction also carries the running mean d of the
 // recent moves per check (of w, and of the pair and corner rotations),
 //   move = servo correction + d,   d <- m d + (1 - m) move,   m = 0.8,
 // so a steady drift is followed with no steady imbalance (the structure of
@@ -84,31 +85,14 @@ void FixRveServo<dim>::timed_check(long step)
 // Measured on small_3d in triaxial compression at 0.25 and 0.125 /s
 // (benchmarks/rve_continuous/README.md).
 template <int dim>
-void FixRveServo<dim>::apply_timed_servo_correction()
+template <class T>
+void FixRveServo<dim>::carry_drift(T& value, const T& before, T& drift)
 {
-  if (!timed_integral_)
-    return apply_servo_correction();
   constexpr double m = 0.8;
-  const std::vector<Vector> w_before = w_;
-  const std::vector<Rotation> theta_before = theta_pair_;
-  const Rotation corner_before = theta_corner_;
-  apply_servo_correction();
-  drift_w_.resize(w_.size(), Vector{});
-  drift_theta_pair_.resize(theta_pair_.size(), Rotation{});
   using fe2dem::operator+;
-  for (std::size_t e = 0; e < w_.size(); ++e)
-  {
-    const Vector move = (w_[e] - w_before[e]) + drift_w_[e];
-    w_[e] = w_before[e] + move;
-    drift_w_[e] = m * drift_w_[e] + (1.0 - m) * move;
-    const Rotation turn = (theta_pair_[e] - theta_before[e]) + drift_theta_pair_[e];
-    theta_pair_[e] = theta_before[e] + turn;
-    drift_theta_pair_[e] = m * drift_theta_pair_[e] + (1.0 - m) * turn;
-  }
-  const Rotation turn = (theta_corner_ - corner_before) + drift_theta_corner_;
-  theta_corner_ = corner_before + turn;
-  drift_theta_corner_ = m * drift_theta_corner_ + (1.0 - m) * turn;
-  schedule_frame_move(F_);
+  const T move = (value - before) + drift;
+  value = before + move;
+  drift = m * drift + (1.0 - m) * move;
 }
 
 // begin_solve() of a timed solve: the frame move lasts the whole solve.

@@ -14,27 +14,10 @@ values are compared: max |d stress_ratio| and max |d sigma22| (N/m), over
 axial strain <= 5 % (pre-peak part of the curve, up to about the peak) and
 over the whole path (0..10 %).
 """
-import csv
 import os
 import sys
 
-
-def read(path):
-    meta = {}
-    lines = []
-    with open(path) as f:
-        for ln in f:
-            if ln.startswith("#"):
-                t = ln[1:].split()
-                # "key value key value ..." header lines
-                for k, v in zip(t[0::2], t[1::2]):
-                    meta.setdefault(k, v)
-            else:
-                lines.append(ln)
-    rows = []
-    for r in csv.DictReader(lines):
-        rows.append({k: (v if k == "stage" else float(v)) for k, v in r.items()})
-    return meta, rows
+from yade_common import read_yade_csv as read
 
 
 def out(name, value, unit="-"):

@@ -42,24 +42,12 @@ import math
 import os
 import sys
 
+from yade_common import read_yade_csv as read_yade
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 P = 1.0e5
 PATHS = ("triaxial", "shear")
 RATES = ("1", "0.5")
-
-
-def read_yade(path):
-    meta, lines = {}, []
-    with open(path) as f:
-        for ln in f:
-            if ln.startswith("#"):
-                t = ln[1:].split()
-                for k, v in zip(t[0::2], t[1::2]):
-                    meta.setdefault(k, v)
-            else:
-                lines.append(ln)
-    rows = [{k: (v if k == "stage" else float(v)) for k, v in r.items()} for r in csv.DictReader(lines)]
-    return meta, rows
 
 
 def out(name, value, unit="-"):

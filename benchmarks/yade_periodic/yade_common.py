@@ -1,7 +1,9 @@
 """Helpers shared by the YADE reference scripts: biaxial_periodic.py (2D)
-and periodic_3d.py (3D). They run under `yade -x SCRIPT`, where __file__ is
+and periodic_3d.py (3D), and by their post-processing (compare.py,
+compare_3d.py; read_yade_csv). They run under `yade -x SCRIPT`, where __file__ is
 yade's own launcher, so each script puts its folder (sys.argv[0]) on
 sys.path before importing this module."""
+import csv
 import os
 import sys
 
@@ -80,3 +82,20 @@ def pi_rate(err, integ, k, ti, tau, dmax):
     """PI servo: the strain rate (err + integ/ti)/(k tau), bounded by +-dmax."""
     d = (err + integ / ti) / (k * tau)
     return max(-dmax, min(dmax, d))
+
+
+def read_yade_csv(path):
+    """A CSV the scripts wrote: the 'key value key value ...' pairs of its '#'
+    header lines (the first value of a key wins) and its rows, every column
+    a float but 'stage'."""
+    meta, lines = {}, []
+    with open(path) as f:
+        for ln in f:
+            if ln.startswith("#"):
+                t = ln[1:].split()
+                for k, v in zip(t[0::2], t[1::2]):
+                    meta.setdefault(k, v)
+            else:
+                lines.append(ln)
+    rows = [{k: (v if k == "stage" else float(v)) for k, v in r.items()} for r in csv.DictReader(lines)]
+    return meta, rows

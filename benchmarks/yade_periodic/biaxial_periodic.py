@@ -228,17 +228,8 @@ def affine_stiffness():
 
 
 def dt_estimate():
-    """Stiffness-based critical step (as GlobalStiffnessTimeStepper, no safety)."""
-    ksum = [0.0] * N
-    krot = [0.0] * N
-    for i in contacts():
-        for bid in (i.id1, i.id2):
-            r = O.bodies[bid].shape.radius
-            ksum[bid] += i.phys.kn
-            krot[bid] += i.phys.ks * r * r
-    dtt = min(math.sqrt(O.bodies[k].state.mass / ksum[k]) for k in range(N) if ksum[k] > 0)
-    dtr = min(math.sqrt(O.bodies[k].state.inertia[2] / krot[k]) for k in range(N) if krot[k] > 0)
-    return dtt, dtr
+    """Stiffness-based critical steps (yade_common.dt_estimate)."""
+    return yade_common.dt_estimate(O.bodies, contacts(), N, 2)
 
 
 # ------------------------------------------------------------------ output

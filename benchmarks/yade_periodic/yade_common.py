@@ -4,6 +4,7 @@ compare_3d.py; read_yade_csv). They run under `yade -x SCRIPT`, where __file__ i
 yade's own launcher, so each script puts its folder (sys.argv[0]) on
 sys.path before importing this module."""
 import csv
+import math
 import os
 import sys
 
@@ -99,3 +100,19 @@ def read_yade_csv(path):
                 lines.append(ln)
     rows = [{k: (v if k == "stage" else float(v)) for k, v in r.items()} for r in csv.DictReader(lines)]
     return meta, rows
+
+
+def dt_estimate(bodies, interactions, n, axis):
+    """Stiffness-based critical steps (as GlobalStiffnessTimeStepper, no safety):
+    min sqrt(m / sum kn) and min sqrt(I / sum ks r^2) over the @p n bodies,
+    I the inertia about @p axis (2D discs: z; spheres: any)."""
+    ksum = [0.0] * n
+    krot = [0.0] * n
+    for i in interactions:
+        for bid in (i.id1, i.id2):
+            r = bodies[bid].shape.radius
+            ksum[bid] += i.phys.kn
+            krot[bid] += i.phys.ks * r * r
+    dtt = min(math.sqrt(bodies[k].state.mass / ksum[k]) for k in range(n) if ksum[k] > 0)
+    dtr = min(math.sqrt(bodies[k].state.inertia[axis] / krot[k]) for k in range(n) if krot[k] > 0)
+    return dtt, dtr

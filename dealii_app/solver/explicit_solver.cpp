@@ -6,6 +6,7 @@
 #include "elastic_extension.h"
 #include "neo_hookean.h"
 #include "rve_material.h"
+#include "prepared_rve.h"
 #include "servo_rve_factory.h"
 
 #include <deal.II/base/mpi.h>
@@ -121,10 +122,19 @@ void ExplicitSolver<dim>::make_constitutive_material(const std::string& checkpoi
                              std::to_string(ip_.size()) + " quadrature points (RVEs): use at most "
                              "mpirun -np " + std::to_string(ip_.size()));
   check_rve_memory(MPI_COMM_WORLD, ip_.size(), packing_particles(prm_.rve.packing + ".vars"));
-  const std::shared_ptr<const fe2dem::RveFactory<dim>> factory =
-    fe2dem::make_servo_rve_factory<dim>(prm_.rve.setup("none"), m.history);
+  fe2dem::RvePreparation preparation;
+  preparation.pressure = m.initial_pressure;
+  preparation.stages = m.initial_pressure_stages;
+  preparation.tolerance = m.initial_pressure_tolerance;
+  preparation.source = "subsection Material, 'Initial pressure' = " + std::to_string(m.initial_pressure);
+  const std::shared_ptr<const fe2dem::RveFactory<dim>> factory = fe2dem::prepare_rves<dim>(
+    fe2dem::make_servo_rve_factory<dim>(prm_.rve.setup("none"), m.history), preparation);
   pcout_ << (checkpoint.empty() ? "creating " : "restoring ") << ip_.size() << " RVEs on " << n_ranks
-         << " rank(s)" << std::endl;
+         << " rank(s)"
+         << (checkpoint.empty() && m.initial_pressure > 0.0
+               ? " (prepared at the initial pressure " + std::to_string(m.initial_pressure) + ")"
+               : "")
+         << std::endl;
   typename fe2dem::RvePool<dim>::StateSource states;
   if (!checkpoint.empty())
     states = [&](std::size_t k) { return read_rve_state(checkpoint, k); };

@@ -98,6 +98,18 @@ void MaterialParameters::declare_parameters(dealii::ParameterHandler& prm)
                     "solve relaxes fully again and the step ends when (M9) holds with converged "
                     "RVEs; the same after 1000 bounded iterations without (M9). 0: relax every "
                     "RVE fully in every iteration (the paper's scheme).");
+  prm.declare_entry("Initial pressure", "0", Double(0.0),
+                    "RVE: before the analysis every RVE is compressed (or unloaded) by quasi-static "
+                    "solves until each normal Cauchy stress is -p, shear stretches held at 0 "
+                    "([LSYF] §3.2: 416 kPa); the mesh is that prepared configuration, so the "
+                    "analysis starts under the stress -p I (boundary tractions must balance it). "
+                    "[Pa; 2D: N/m]. 0: the RVEs start as built, relaxed at F = I.");
+  prm.declare_entry("Initial pressure stages", "2", Integer(1),
+                    "RVE: the preparation's stage k of n targets -p k / n (as the isotropic stage "
+                    "of fe2dem-rve, 'Isotropic control' = each component).");
+  prm.declare_entry("Initial pressure tolerance", "2e-3", Double(0.0),
+                    "RVE: a preparation stage ends when each normal stress is within this times p of "
+                    "its target, > 0.");
   prm.declare_entry("Shear modulus", "1e6", Double(0.0), "mu, > 0 [force/area; 2D: force/length].");
   prm.declare_entry("Lame lambda", "1e6", Double(0.0), "lambda, >= 0.");
   prm.declare_entry("Density", "1", Double(0.0),
@@ -118,7 +130,16 @@ void MaterialParameters::parse_parameters(dealii::ParameterHandler& prm)
   history = prm.get("History") == "committed" ? HistoryMode::committed : HistoryMode::continuous;
   skip_tolerance = prm.get_double("Skip tolerance");
   steps_per_iteration = prm.get_integer("DEM steps per iteration");
+  initial_pressure = prm.get_double("Initial pressure");
+  initial_pressure_stages = prm.get_integer("Initial pressure stages");
+  initial_pressure_tolerance = prm.get_double("Initial pressure tolerance");
   prm.leave_subsection();
+  if (initial_pressure > 0.0 && type != Type::rve)
+    throw std::runtime_error("subsection Material: 'Initial pressure' = " + std::to_string(initial_pressure) +
+                             " prepares RVEs, but 'Type' = neo-Hookean; set it to 0 or use 'Type' = RVE");
+  if (initial_pressure > 0.0 && !(initial_pressure_tolerance > 0.0))
+    throw std::runtime_error("subsection Material: 'Initial pressure tolerance' = " +
+                             std::to_string(initial_pressure_tolerance) + " must be > 0 (e.g. 2e-3)");
   if (steps_per_iteration > 0 && history != HistoryMode::continuous)
     throw std::runtime_error("subsection Material: 'DEM steps per iteration' = " +
                              std::to_string(steps_per_iteration) + " needs 'History' = continuous "
@@ -589,6 +610,13 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
                              "condition N' with functions of the time t");
   if (dynamics.dynamic && material.type == MaterialParameters::Type::rve)
     material.check_for_dynamics();
+  if (material.initial_pressure > 0.0 && loading.boundary != Loading::Boundary::conditions &&
+      loading.isotropic_steps > 0)
+    throw std::runtime_error("subsection Material: 'Initial pressure' = " +
+                             std::to_string(material.initial_pressure) + " starts the RVEs compressed, "
+                             "but subsection Loading ramps 'Pressure' from 0 in 'Isotropic steps' = " +
+                             std::to_string(loading.isotropic_steps) + "; set 'Isotropic steps' = 0 and "
+                             "'Pressure' = the initial pressure, or 'Initial pressure' = 0");
   particle_dumps.parse_parameters(prm);
   checkpoint.parse_parameters(prm);
   parallel.parse_parameters(prm);

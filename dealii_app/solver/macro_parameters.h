@@ -45,6 +45,9 @@ struct MaterialParameters
   HistoryMode history;      ///< RVE: where trial solves start
   double skip_tolerance;    ///< RVE: reuse the last response if |F - F_last| below it (0: off)
   long steps_per_iteration; ///< RVE: DEM steps per DR iteration before convergence (0: relax fully)
+  double initial_pressure;  ///< RVE: each RVE prepared at sigma = -p I before the analysis (0: as built)
+  unsigned int initial_pressure_stages; ///< RVE: stages of that preparation
+  double initial_pressure_tolerance;    ///< RVE: relative tolerance of its normal stresses
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm);
   /// @throws std::runtime_error naming the entry if RVEs cannot run in explicit dynamics so.

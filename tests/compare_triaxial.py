@@ -1,0 +1,41 @@
+#!/usr/bin/env python3
+"""One-element triaxial check (issue 35): the Cauchy stress of IP 0 in
+fe2dem's history.h5 against fe2dem-rve's rve.csv, row by row: the axial
+stress sigma_aa and the deviator q = sigma_aa - (mean of the two lateral
+normal stresses) must agree within TOL (relative to the rve.csv value).
+Usage: compare_triaxial.py HISTORY_H5 RVE_CSV SKIP_ROWS TOL [AXIS]
+  SKIP_ROWS: rve.csv rows before the first one compared (F = I and the
+  isotropic stage); AXIS: 1, 2 or 3 (default 2, y)."""
+import csv
+import sys
+
+import h5py
+
+history, rve_csv, skip, tol = sys.argv[1], sys.argv[2], int(sys.argv[3]), float(sys.argv[4])
+a = int(sys.argv[5]) - 1 if len(sys.argv) > 5 else 1
+lateral = [i for i in range(3) if i != a]
+with h5py.File(history, "r") as f:
+    macro = f["sigma"][:, 0, :]
+rows = list(csv.DictReader(open(rve_csv)))[skip:]
+if len(rows) != len(macro) or not rows:
+    print(f"FAIL: {len(macro)} history.h5 steps vs {len(rows)} rve.csv rows")
+    sys.exit(1)
+
+
+def axial_and_q(s):
+    axial = s[4 * a]
+    return axial, axial - 0.5 * (s[4 * lateral[0]] + s[4 * lateral[1]])
+
+
+fails, worst = 0, 0.0
+for k, (m, r) in enumerate(zip(macro, rows), 1):
+    ref = [float(r[f"sigma{i}{j}"]) for i in range(1, 4) for j in range(1, 4)]
+    (am, qm), (ar, qr) = axial_and_q(m), axial_and_q(ref)
+    da, dq = (am - ar) / ar, (qm - qr) / qr  # > 0: larger in magnitude than the reference
+    ok = abs(da) <= tol and abs(dq) <= tol
+    fails += not ok
+    worst = max(worst, abs(da), abs(dq))
+    print(f"{'ok  ' if ok else 'FAIL'} row {k}: axial {am:.6g} vs {ar:.6g} ({100 * da:+.2f} %), "
+          f"q {qm:.6g} vs {qr:.6g} ({100 * dq:+.2f} %), lateral {m[4 * lateral[0]]:.6g} {m[4 * lateral[1]]:.6g}")
+print(f"{len(rows) - fails} of {len(rows)} rows within {tol}; largest difference {100 * worst:.2f} %")
+sys.exit(1 if fails else 0)

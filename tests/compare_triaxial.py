@@ -4,6 +4,7 @@ fe2dem's history.h5 against fe2dem-rve's rve.csv, row by row: the axial
 stress sigma_aa and the deviator q = sigma_aa - (mean of the two lateral
 normal stresses) must agree within TOL (relative to the rve.csv value).
 Usage: compare_triaxial.py HISTORY_H5 RVE_CSV SKIP_ROWS TOL [AXIS]
+  HISTORY_H5 may also be another rve.csv (its rows after SKIP_ROWS).
   SKIP_ROWS: rve.csv rows before the first one compared (F = I and the
   isotropic stage); AXIS: 1, 2 or 3 (default 2, y)."""
 import csv
@@ -14,8 +15,12 @@ import h5py
 history, rve_csv, skip, tol = sys.argv[1], sys.argv[2], int(sys.argv[3]), float(sys.argv[4])
 a = int(sys.argv[5]) - 1 if len(sys.argv) > 5 else 1
 lateral = [i for i in range(3) if i != a]
-with h5py.File(history, "r") as f:
-    macro = f["sigma"][:, 0, :]
+names = [f"sigma{i}{j}" for i in range(1, 4) for j in range(1, 4)]
+if history.endswith(".csv"):
+    macro = [[float(r[n]) for n in names] for r in list(csv.DictReader(open(history)))[skip:]]
+else:
+    with h5py.File(history, "r") as f:
+        macro = f["sigma"][:, 0, :]
 rows = list(csv.DictReader(open(rve_csv)))[skip:]
 if len(rows) != len(macro) or not rows:
     print(f"FAIL: {len(macro)} history.h5 steps vs {len(rows)} rve.csv rows")
@@ -29,7 +34,7 @@ def axial_and_q(s):
 
 fails, worst = 0, 0.0
 for k, (m, r) in enumerate(zip(macro, rows), 1):
-    ref = [float(r[f"sigma{i}{j}"]) for i in range(1, 4) for j in range(1, 4)]
+    ref = [float(r[n]) for n in names]
     (am, qm), (ar, qr) = axial_and_q(m), axial_and_q(ref)
     da, dq = (am - ar) / ar, (qm - qr) / qr  # > 0: larger in magnitude than the reference
     ok = abs(da) <= tol and abs(dq) <= tol

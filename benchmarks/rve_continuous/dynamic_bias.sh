@@ -1,45 +1,87 @@
 #!/usr/bin/env bash
-# Dynamic RVEs against the continuous reference (issue 35, item 5): the
-# one-element simple shear of tests/dynamics_rve/shear_3d.prm (small_3d,
-# every node prescribed, F12 to 2 %) in explicit dynamics over 0.0192,
-# 0.0768 and 0.3072 s (shear rates 1.04, 0.26, 0.065 /s), against fe2dem-rve
-# driven continuously at 0.0163 /s (a quarter of the slowest) on the same
-# RVE (tests/dynamics_rve/shear_continuous_rve.prm with that rate).
-# Writes results/dynamic_bias/{dyn_*,reference}/ and results/dynamic_bias.txt.
+# Dynamic RVEs against the continuous reference (issue 35, item 5), one
+# element, one point, in fe2dem's explicit dynamics over 0.0192, 0.0768 and
+# 0.3072 s (rates 1.04, 0.26, 0.065 /s), against fe2dem-rve driven
+# continuously at 0.0163 /s (a quarter of the slowest) on the same RVE:
+#   shear              tests/dynamics_rve/shear_3d.prm (small_3d, every node
+#                      prescribed, F12 to 2 %) against shear_continuous_rve.prm
+#   triaxial_PACKING   tests/dynamics_rve/triaxial_3d.prm (RVE prepared at
+#                      100 kPa, lateral pressure 100 kPa, 2 % along y) on
+#                      PACKING (small_3d, lsyf_1000) against
+#                      triaxial_continuous_rve.prm; also the reference at
+#                      0.0651 /s, to show the reference's own rate spread
+# Writes results/dynamic_bias/CASE/{dyn_*,reference*}/ and results/dynamic_bias*.txt.
 #
-#   dynamic_bias.sh BUILD
+#   dynamic_bias.sh BUILD [shear|triaxial_small_3d|triaxial_lsyf_1000|all]   (default shear)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-[[ $# -eq 1 ]] || { sed -n '2,10p' "$0"; exit 2; }
+[[ $# -ge 1 && $# -le 2 ]] || { sed -n '2,15p' "$0"; exit 2; }
 build="$(cd "$1" && pwd)"
-out="$here/results/dynamic_bias"
-mkdir -p "$out"
+what="${2:-shear}"
+end_times=(0.0192 0.0768 0.3072)
 rebase() { sed "s#\.\./\.\./rve_templates#$root/rve_templates#" "$@"; }
 
-ref="$out/reference"
-if [[ ! -f "$ref/rve.csv" ]]; then
-  mkdir -p "$ref"
-  rebase "$root/tests/dynamics_rve/shear_continuous_rve.prm" |
-    sed 's/^\( *set Strain rate *=\).*/\1 0.016276/' > "$ref/case.prm"
-  t0=$SECONDS
-  "$build/dealii_app/rve_driver/fe2dem-rve" "$ref/case.prm" --output-directory "$ref" > "$ref/run.log"
-  echo "reference: $((SECONDS - t0)) s"
-fi
-for end_time in 0.0192 0.0768 0.3072; do
-  d="$out/dyn_$end_time"
-  if [[ ! -f "$d/out/history.h5" ]]; then
-    mkdir -p "$d"
-    rebase "$root/tests/dynamics_rve/shear_3d.prm" | sed "s#END_TIME#$end_time#g" > "$d/macro.prm"
-    t0=$SECONDS
-    (cd "$d" && "$build/dealii_app/solver/fe2dem" macro.prm > log)
-    echo "dynamic over $end_time s: $((SECONDS - t0)) s"
-  fi
-done
-{
-  echo "# dynamic one-element simple shear (small_3d) against fe2dem-rve continuous at 0.0163 /s"
-  for end_time in 0.0192 0.0768 0.3072; do
-    echo "## dynamic over $end_time s (shear rate $(awk -v t=$end_time 'BEGIN {printf "%.3g", 0.02 / t}') /s)"
-    /usr/bin/python3 "$root/tests/compare_rve_stress.py" "$out/dyn_$end_time/out/history.h5" "$ref/rve.csv" 1 1 1
+# run_reference DIR PRM RATE [sed expression]: fe2dem-rve continuous at RATE
+run_reference() {
+  local dir=$1 prm=$2 rate=$3 edit=${4:-}
+  [[ -f "$dir/rve.csv" ]] && return
+  mkdir -p "$dir"
+  rebase "$prm" | sed "s/^\( *set Strain rate *=\).*/\1 $rate/; $edit" > "$dir/case.prm"
+  local t0=$SECONDS
+  "$build/dealii_app/rve_driver/fe2dem-rve" "$dir/case.prm" --output-directory "$dir" > "$dir/run.log"
+  echo "reference $dir: $((SECONDS - t0)) s"
+}
+# run_dynamic DIR PRM END_TIME [sed expression]
+run_dynamic() {
+  local dir=$1 prm=$2 end_time=$3 edit=${4:-}
+  [[ -f "$dir/out/history.h5" ]] && return
+  mkdir -p "$dir"
+  rebase "$prm" | sed "s#END_TIME#$end_time#g; $edit" > "$dir/macro.prm"
+  local t0=$SECONDS
+  (cd "$dir" && "$build/dealii_app/solver/fe2dem" macro.prm > log)
+  echo "dynamic $dir: $((SECONDS - t0)) s"
+}
+rate_of() { awk -v t="$1" 'BEGIN {printf "%.3g", 0.02 / t}'; }
+
+shear() {
+  local out="$here/results/dynamic_bias"
+  run_reference "$out/reference" "$root/tests/dynamics_rve/shear_continuous_rve.prm" 0.016276
+  for t in "${end_times[@]}"; do
+    run_dynamic "$out/dyn_$t" "$root/tests/dynamics_rve/shear_3d.prm" "$t"
   done
-} | tee "$here/results/dynamic_bias.txt"
+  {
+    echo "# dynamic one-element simple shear (small_3d) against fe2dem-rve continuous at 0.0163 /s"
+    for t in "${end_times[@]}"; do
+      echo "## dynamic over $t s (shear rate $(rate_of $t) /s)"
+      /usr/bin/python3 "$root/tests/compare_rve_stress.py" "$out/dyn_$t/out/history.h5" "$out/reference/rve.csv" 1 1 1
+    done
+  } | tee "$here/results/dynamic_bias.txt"
+}
+
+triaxial() {
+  local packing=$1 out="$here/results/dynamic_bias/triaxial_$1"
+  local edit="s#packings/small_3d#packings/$packing#"
+  run_reference "$out/reference" "$root/tests/dynamics_rve/triaxial_continuous_rve.prm" 0.016276 "s/RATE/0.016276/; $edit"
+  run_reference "$out/reference_0.0651" "$root/tests/dynamics_rve/triaxial_continuous_rve.prm" 0.0651 "s/RATE/0.0651/; $edit"
+  for t in "${end_times[@]}"; do
+    run_dynamic "$out/dyn_$t" "$root/tests/dynamics_rve/triaxial_3d.prm" "$t" "$edit"
+  done
+  {
+    echo "# dynamic one-element triaxial ($packing, 100 kPa) against fe2dem-rve continuous at 0.0163 /s"
+    for t in "${end_times[@]}"; do
+      echo "## dynamic over $t s (axial rate $(rate_of $t) /s)"
+      /usr/bin/python3 "$root/tests/compare_triaxial.py" "$out/dyn_$t/out/history.h5" "$out/reference/rve.csv" 3 0.02 || true
+    done
+    echo "## the reference's own rate spread: fe2dem-rve continuous at 0.0651 /s"
+    /usr/bin/python3 "$root/tests/compare_triaxial.py" "$out/reference_0.0651/rve.csv" "$out/reference/rve.csv" 3 0.02 || true
+  } | tee "$here/results/dynamic_bias_triaxial_$packing.txt"
+}
+
+case "$what" in
+  shear) shear ;;
+  triaxial_small_3d) triaxial small_3d ;;
+  triaxial_lsyf_1000) triaxial lsyf_1000 ;;
+  all) shear; triaxial small_3d; triaxial lsyf_1000 ;;
+  *) sed -n '2,15p' "$0"; exit 2 ;;
+esac

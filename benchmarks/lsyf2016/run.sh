@@ -1,0 +1,122 @@
+#!/usr/bin/env bash
+# [LSYF] problems 1 and 2 at full size (issue 35, items 6 and 7): lsyf_4096
+# RVEs with the [LSYF] Hertz grains prepared at 416 kPa ('Initial pressure').
+#   wave       problem 2: the wave column (wave_column.prm, 2 ranks), the
+#              constrained modulus M of its RVE (constrained_modulus.prm), an
+#              elastic column with that M (the same mesh and loading), and
+#              wave.py's table and PNG
+#   problem1   problem 1: one element in triaxial compression and in simple
+#              shear in explicit dynamics against fe2dem-rve on the same
+#              packing and path (problem1_*_{dynamic,rve}.prm), and the
+#              triaxial one quasi-static against fe2dem-rve stepped and
+#              continuous (problem1_triaxial_{quasi_static,rve_stepped}.prm)
+#   tables     the comparison tables from what exists
+# Each case in results/CASE/ (the parameter file, log, outputs); a case whose
+# result exists is not run again.
+#
+#   run.sh BUILD wave|problem1|tables|all
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+[[ $# -eq 2 ]] || { sed -n '2,16p' "$0"; exit 2; }
+build="$(cd "$1" && pwd)"
+what=$2
+results="$here/results"
+py=/usr/bin/python3
+rebase() { sed "s#\.\./\.\./rve_templates#$root/rve_templates#" "$@"; }
+mpirun_np() {
+  local n=$1; shift
+  if [[ $n -eq 1 ]]; then "$@"; else mpirun --allow-run-as-root --oversubscribe -np "$n" "$@"; fi
+}
+
+# run_macro NAME PRM NP [sed expression]: fe2dem into results/NAME/out
+run_macro() {
+  local dir="$results/$1" prm=$2 np=$3 edit=${4:-}
+  [[ -f "$dir/out/history.h5" && -f "$dir/wall_s" ]] && return
+  rm -rf "$dir"; mkdir -p "$dir"
+  rebase "$prm" | sed "$edit" > "$dir/macro.prm"
+  local t0=$SECONDS
+  (cd "$dir" && mpirun_np "$np" "$build/dealii_app/solver/fe2dem" macro.prm > log 2>&1)
+  echo $((SECONDS - t0)) > "$dir/wall_s"
+  rm -rf "$dir/out/checkpoints" "$dir"/out/*.vtu "$dir"/out/*.pvd
+  echo "$1: $(cat "$dir/wall_s") s on $np rank(s)"
+}
+# run_rve NAME PRM: fe2dem-rve into results/NAME
+run_rve() {
+  local dir="$results/$1" prm=$2
+  [[ -f "$dir/rve.csv" && -f "$dir/wall_s" ]] && return
+  rm -rf "$dir"; mkdir -p "$dir"
+  rebase "$prm" > "$dir/case.prm"
+  local t0=$SECONDS
+  "$build/dealii_app/rve_driver/fe2dem-rve" "$dir/case.prm" --output-directory "$dir" > "$dir/run.log"
+  echo $((SECONDS - t0)) > "$dir/wall_s"
+  echo "$1: $(cat "$dir/wall_s") s"
+}
+
+wave() {
+  run_macro constrained_modulus "$here/constrained_modulus.prm" 1
+  local M
+  M=$($py "$here/wave.py" modulus "$results/constrained_modulus/out")
+  # the elastic column: the same mesh, density and loading, neo-Hookean with
+  # lambda + 2 mu = M and nu = 0.2 (only M matters in uniaxial strain)
+  local mu lambda
+  mu=$(awk -v M="$M" 'BEGIN {printf "%.6g", M / (2 + 2 * 0.2 / 0.6)}')
+  lambda=$(awk -v M="$M" -v mu="$mu" 'BEGIN {printf "%.6g", M - 2 * mu}')
+  local elastic="s/^  set Type              = RVE/  set Type              = neo-Hookean\n  set Shear modulus     = $mu\n  set Lame lambda       = $lambda/; s/^  set Initial pressure .*//"
+  local small="s#-1e-4 \* sin#-1e-6 * sin#"
+  run_macro wave_column "$here/wave_column.prm" 2
+  run_macro wave_column_elastic "$here/wave_column.prm" 1 "$elastic"
+  # the same column driven at 1 um: a linear wave (strain amplitude 1e-4)
+  run_macro wave_column_1um "$here/wave_column.prm" 2 "$small"
+  run_macro wave_column_1um_elastic "$here/wave_column.prm" 1 "$elastic; $small"
+  wave_table
+}
+wave_table() {
+  local r=$results
+  {
+    echo "## driven at 0.1 mm ([LSYF])"
+    $py "$here/wave.py" column "$r/constrained_modulus/out" "$r/wave_column/out" "$r/wave_column_elastic/out" \
+      "$r/wave_column.png" 1e-4
+    echo "## driven at 1 um (linear)"
+    $py "$here/wave.py" column "$r/constrained_modulus/out" "$r/wave_column_1um/out" "$r/wave_column_1um_elastic/out" \
+      "$r/wave_column_1um.png" 1e-6
+  } 2>&1 | tee "$r/wave_column.txt"
+}
+
+problem1() {
+  run_rve problem1_triaxial_rve "$here/problem1_triaxial_rve.prm" &
+  run_macro problem1_triaxial_dynamic "$here/problem1_triaxial_dynamic.prm" 1
+  wait
+  run_rve problem1_shear_rve "$here/problem1_shear_rve.prm" &
+  run_macro problem1_shear_dynamic "$here/problem1_shear_dynamic.prm" 1
+  wait
+  run_rve problem1_triaxial_rve_stepped "$here/problem1_triaxial_rve_stepped.prm" &
+  run_macro problem1_triaxial_quasi_static "$here/problem1_triaxial_quasi_static.prm" 1
+  wait
+  problem1_tables
+}
+problem1_tables() {
+  {
+    echo "# [LSYF] problem 1, triaxial: dynamic one element against fe2dem-rve (rows every 0.25 %)"
+    $py "$root/tests/compare_triaxial.py" "$results/problem1_triaxial_dynamic/out/history.h5" \
+      "$results/problem1_triaxial_rve/rve.csv" 3 0.02 || true
+    echo "# [LSYF] problem 1, simple shear: dynamic one element against fe2dem-rve"
+    $py "$root/tests/compare_rve_stress.py" "$results/problem1_shear_dynamic/out/history.h5" \
+      "$results/problem1_shear_rve/rve.csv" 3 0.02 0.02 || true
+    echo "# [LSYF] problem 1, triaxial, quasi-static one element against fe2dem-rve stepped (the same 0.25 % steps)"
+    $py "$root/tests/compare_triaxial.py" "$results/problem1_triaxial_quasi_static/out/history.h5" \
+      "$results/problem1_triaxial_rve_stepped/rve.csv" 3 0.02 || true
+    echo "# [LSYF] problem 1, triaxial, quasi-static one element against fe2dem-rve continuous"
+    $py "$root/tests/compare_triaxial.py" "$results/problem1_triaxial_quasi_static/out/history.h5" \
+      "$results/problem1_triaxial_rve/rve.csv" 3 0.02 || true
+  } | tee "$results/problem1.txt"
+}
+
+mkdir -p "$results"
+case "$what" in
+  wave) wave ;;
+  problem1) problem1 ;;
+  tables) wave_table; problem1_tables ;;
+  all) wave; problem1 ;;
+  *) sed -n '2,16p' "$0"; exit 2 ;;
+esac

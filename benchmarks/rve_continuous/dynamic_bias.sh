@@ -40,6 +40,7 @@ run_dynamic() {
   rebase "$prm" | sed "s#END_TIME#$end_time#g; $edit" > "$dir/macro.prm"
   local t0=$SECONDS
   (cd "$dir" && "$build/dealii_app/solver/fe2dem" macro.prm > log)
+  rm -rf "$dir/out/checkpoints" "$dir"/out/*.vtu "$dir"/out/*.pvd
   echo "dynamic $dir: $((SECONDS - t0)) s"
 }
 rate_of() { awk -v t="$1" 'BEGIN {printf "%.3g", 0.02 / t}'; }

@@ -9,7 +9,8 @@
 #              shear in explicit dynamics against fe2dem-rve on the same
 #              packing and path (problem1_*_{dynamic,rve}.prm), and the
 #              triaxial one quasi-static (dynamic relaxation in 8 steps)
-#              against the continuous single RVE (problem1_triaxial_quasi_static.prm)
+#              against the single RVE in the same relaxed steps and
+#              continuously (problem1_triaxial_{quasi_static,rve_stepped}.prm)
 #   tables     the comparison tables from what exists
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
 # result exists is not run again.
@@ -90,7 +91,9 @@ problem1() {
   run_rve problem1_shear_rve "$here/problem1_shear_rve.prm" &
   run_macro problem1_shear_dynamic "$here/problem1_shear_dynamic.prm" 1
   wait
+  run_rve problem1_triaxial_rve_stepped "$here/problem1_triaxial_rve_stepped.prm" &
   run_macro problem1_triaxial_quasi_static "$here/problem1_triaxial_quasi_static.prm" 1
+  wait
   problem1_tables
 }
 problem1_tables() {
@@ -101,6 +104,9 @@ problem1_tables() {
     echo "# [LSYF] problem 1, simple shear: dynamic one element against fe2dem-rve"
     $py "$root/tests/compare_rve_stress.py" "$results/problem1_shear_dynamic/out/history.h5" \
       "$results/problem1_shear_rve/rve.csv" 3 0.02 0.02 || true
+    echo "# [LSYF] problem 1, triaxial, quasi-static one element against fe2dem-rve stepped (the same 0.25 % steps)"
+    $py "$root/tests/compare_triaxial.py" "$results/problem1_triaxial_quasi_static/out/history.h5" \
+      "$results/problem1_triaxial_rve_stepped/rve.csv" 3 0.02 || true
     echo "# [LSYF] problem 1, triaxial, quasi-static one element against fe2dem-rve continuous"
     $py "$root/tests/compare_triaxial.py" "$results/problem1_triaxial_quasi_static/out/history.h5" \
       "$results/problem1_triaxial_rve/rve.csv" 3 0.02 || true

@@ -11,6 +11,22 @@
 
 namespace fe2dem
 {
+/**
+ * How a quasi-static solve (one that must end relaxed and balanced) takes
+ * the RVE to its new F. Timed solves of explicit dynamics are not affected.
+ */
+enum class SolveDrive
+{
+  /// [LBS] (R14): the frame jumps to F X + w at the fix's move_rate, the packing
+  /// relaxes, the servo corrects w, and again until the frame is balanced.
+  servo_iterations,
+  /// F reached at a strain rate by timed solves with the servo acting at every
+  /// check, then held there by timed solves until relaxed and balanced: the
+  /// continuous path with a hold at the end (issue 35: the servo iterations'
+  /// jumps of the frame lose 3-13 % of the stress along the same F path).
+  continuous
+};
+
 /// An RVE instance: a LIGGGHTS script that defines fix rve/servo `fix_id`.
 struct RveSetup
 {
@@ -18,6 +34,9 @@ struct RveSetup
   std::map<std::string, std::string> variables; ///< index variables set before the script
   std::string fix_id = "rve";
   std::string log_file = "none";
+  SolveDrive solve_drive = SolveDrive::servo_iterations;
+  double solve_strain_rate = 0.25; ///< [1/s] largest |dF_ij/dt| of a continuous solve's approach
+  long solve_interval = 200;       ///< DEM steps per timed solve of a continuous solve (a multiple of the check interval)
 };
 
 /**

@@ -7,6 +7,7 @@
 
 #include "lammps.h"
 #include "timer.h"
+#include "update.h"
 
 #include <mpi.h>
 #include <signal.h>
@@ -157,6 +158,12 @@ const typename ServoRve<dim>::Result& ServoRve<dim>::solve(const Matrix& F, long
     rollback();
   at_committed_state_ = false;
   const bool bounded = timed_steps_ == 0 && limit_steps(step_limit);
+  continuous_last_ = false;
+  if (timed_steps_ == 0 && !stretch_next_ && setup_.solve_drive == SolveDrive::continuous)
+  {
+    solve_continuously(F, bounded ? fix_->max_steps() : 0);
+    return result();
+  }
   if (fix_->timed_steps() != timed_steps_)
     fix_->set_timed_steps(timed_steps_);
   Matrix applied = F;
@@ -166,6 +173,76 @@ const typename ServoRve<dim>::Result& ServoRve<dim>::solve(const Matrix& F, long
   fix_->set_deformation(applied);
   run_until_done(bounded);
   return fix_->result();
+}
+
+// Solve drive = continuous. The approach is a straight path F_from -> F in
+// timed solves of solve_interval steps, as many as keep every |dF_ij/dt| at
+// or below solve_strain_rate; the servo acts at every check (with integral
+// action, fix_rve_servo_timed.tpp) instead of in relax-then-correct rounds,
+// whose jumps of the frame shake the packing out of the state the continuous
+// path holds. The hold repeats timed solves at F until the fix's own test
+// (relaxed, balanced) passes at the end of one. A bounded solve (multiple
+// time stepping) is one timed solve of its step limit towards F.
+template <int dim>
+void ServoRve<dim>::solve_continuously(const Matrix& F, long step_limit)
+{
+  const Matrix F_from = mode_ == HistoryMode::committed ? committed_F_ : fix_->result().F;
+  double largest = 0.0;
+  for (std::size_t k = 0; k < F.size(); ++k)
+    largest = std::max(largest, std::abs(F[k] - F_from[k]));
+  const long interval = setup_.solve_interval;
+  const double interval_time = interval * instance_->lammps()->update->dt;
+  long steps = 0, membrane_steps = 0;
+  int solves = 0;
+  auto timed_solve = [&](const Matrix& target, long n) {
+    fix_->set_timed_steps(n);
+    fix_->set_deformation(target);
+    run_until_done(); // a timed solve ends converged; a failure throws
+    steps += fix_->result().dem_steps;
+    membrane_steps += fix_->result().membrane_steps;
+    ++solves;
+  };
+  struct QuasiStaticAgain // the fix back to quasi-static solves, also after a failure
+  {
+    ServoRve* rve;
+    ~QuasiStaticAgain() { rve->fix_->set_timed_steps(0); }
+  } again{this};
+  if (step_limit > 0)
+  {
+    timed_solve(F, step_limit);
+    last_converged_ = fix_->at_rest();
+  }
+  else
+  {
+    const long ramp = static_cast<long>(std::ceil(largest / (setup_.solve_strain_rate * interval_time) - 1e-9));
+    for (long k = 1; k <= ramp; ++k)
+    {
+      Matrix F_k;
+      for (std::size_t c = 0; c < F.size(); ++c)
+        F_k[c] = F_from[c] + (static_cast<double>(k) / ramp) * (F[c] - F_from[c]);
+      timed_solve(k == ramp ? F : F_k, interval);
+    }
+    do
+    {
+      if (steps + interval > budget_)
+      {
+        last_converged_ = false;
+        const Result& r = fix_->result();
+        throw RveSolveError(Fix::over_budget,
+                            std::string(Fix::status_name(Fix::over_budget)) +
+                              ": continuous solve not at rest within the step budget of " +
+                              std::to_string(budget_) + " DEM steps (r_a = " + std::to_string(r.residual) +
+                              ", E_kin/E_pot = " + std::to_string(r.ekin_epot) + ")");
+      }
+      timed_solve(F, interval);
+    } while (!fix_->at_rest());
+    last_converged_ = true;
+  }
+  continuous_result_ = fix_->result();
+  continuous_result_.dem_steps = steps;
+  continuous_result_.membrane_steps = membrane_steps;
+  continuous_result_.servo_iterations = solves;
+  continuous_last_ = true;
 }
 
 template <int dim>
@@ -219,7 +296,7 @@ const RveResponse<dim>& ServoRve<dim>::solve_increment(const Tensor& d_eps)
 template <int dim>
 const RveResponse<dim>& ServoRve<dim>::response() const
 {
-  response_ = to_response<dim>(fix_->result());
+  response_ = to_response<dim>(result());
   response_.converged = last_converged_;
   return response_;
 }
@@ -260,6 +337,7 @@ void ServoRve<dim>::rollback()
     throw std::logic_error("ServoRve::rollback() before any commit()");
   open_instance(committed_file_);
   at_committed_state_ = true;
+  continuous_last_ = false;
 }
 
 template <int dim>

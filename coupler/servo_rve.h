@@ -105,7 +105,9 @@ public:
   double last_solve_loop_seconds() const override { return last_loop_seconds_; }
   void write_particles(const std::string& prefix, long timestep) const override;
 
-  const Result& result() const { return fix_->result(); }
+  /// The last solve's result; after a continuous solve (RveSetup::solve_drive) that of its last
+  /// timed solve, with dem_steps and membrane_steps summed over all and servo_iterations = their number.
+  const Result& result() const { return continuous_last_ ? continuous_result_ : fix_->result(); }
   Fix& fix() { return *fix_; }
   LiggghtsInstance& instance() { return *instance_; }
   HistoryMode history_mode() const { return mode_; }
@@ -119,6 +121,8 @@ private:
   ServoRve(const RveSetup& setup, HistoryMode mode, const std::string& restart_file, FromRestart);
   void open_instance(const std::string& restart_file);
   void run_until_done(bool bounded = false);
+  /// solve() with SolveDrive::continuous: approach F at the solve strain rate, hold until at rest.
+  void solve_continuously(const Matrix& F, long step_limit);
   /// Rebuilds the instance @p e left half-way from the committed state; throws RveSolveError.
   [[noreturn]] void recover_from(const std::exception& e);
   /// Sets the fix's step budget for the next solve: @p step_limit or the template's budget.
@@ -142,6 +146,8 @@ private:
   long timed_steps_ = 0;              ///< of set_timed_steps()
   bool stretch_next_ = false;         ///< inject_fault(RveFault::liggghts_error) pending
   mutable RveResponse<dim> response_;   ///< rve_to_macro of the fix's result
+  bool continuous_last_ = false;        ///< the last solve was a continuous one
+  Result continuous_result_;            ///< its result (result())
 };
 
 /// rve_to_macro: the fix's result as the macro side sees it (rve_statistics.h).

@@ -215,6 +215,14 @@ public:
   const std::vector<Vector>& fluctuations() const { return w_; }
   /// Current rotation of each frame particle, in frame order.
   const std::vector<Rotation>& frame_rotations() const { return theta_frame_; }
+  /**
+   * The convergence test of a quasi-static solve (relaxed by the relaxation
+   * criterion, frame balanced within servo_tol) on the state the last check
+   * homogenised: for drivers that end timed solves themselves, e.g. a frame
+   * held at one F by timed solves until it is at rest (coupler/servo_rve.h,
+   * continuous solve drive).
+   */
+  bool at_rest() const;
   /// Steps of the current frame move still to run (0: the frame is at rest).
   int frame_move_steps_left() const { return move_steps_ - move_done_; }
   /// Steps between checks: C++ drivers run chunks of this length.
@@ -257,6 +265,8 @@ private:
   void homogenise(double ekin);
   /// Relaxation test, convergence decision or servo correction at a check.
   void servo_check(double ekin);
+  /// The relaxation criterion (relax ekin_epot | unbalanced) with contact statistics @p c.
+  bool relaxed_with(const fe2dem::ContactStatistics<dim>& c, double ekin) const;
   double servo_residual() const;
   /// Sum of a per-frame-particle value over the images of group @p g.
   template <class T>

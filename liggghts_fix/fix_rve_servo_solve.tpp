@@ -133,15 +133,9 @@ template <int dim>
 void FixRveServo<dim>::servo_check(double ekin)
 {
   const int refresh_checks = 10;
-  auto relaxed_with = [&](const ContactStatistics<dim>& c) {
-    if (criterion_unbalanced_)
-      return c.mean_force_sq > 0.0 &&
-             unbalanced_sq_sum_ / std::max(n_inner_, 1) <= relax_tol_ * relax_tol_ * c.mean_force_sq;
-    return c.potential_energy > 0.0 && ekin <= relax_tol_ * c.potential_energy;
-  };
   const bool cache_fresh = checks_since_contact_pass_ < refresh_checks;
   const double residual = servo_residual();
-  bool relaxed = cache_fresh && relaxed_with(result_.contacts);
+  bool relaxed = cache_fresh && relaxed_with(result_.contacts, ekin);
   if (relaxed && residual > servo_tol_)
   {
     result_.residual = residual; // correct with the cached energies
@@ -158,7 +152,7 @@ void FixRveServo<dim>::servo_check(double ekin)
       return;
     }
     homogenise(ekin); // fresh values decide
-    relaxed = relaxed_with(result_.contacts);
+    relaxed = relaxed_with(result_.contacts, ekin);
   }
   if (!relaxed)
     return;
@@ -166,6 +160,22 @@ void FixRveServo<dim>::servo_check(double ekin)
     status_ = converged;
   else
     apply_servo_correction();
+}
+
+template <int dim>
+bool FixRveServo<dim>::relaxed_with(const fe2dem::ContactStatistics<dim>& c, double ekin) const
+{
+  if (criterion_unbalanced_)
+    return c.mean_force_sq > 0.0 &&
+           unbalanced_sq_sum_ / std::max(n_inner_, 1) <= relax_tol_ * relax_tol_ * c.mean_force_sq;
+  return c.potential_energy > 0.0 && ekin <= relax_tol_ * c.potential_energy;
+}
+
+template <int dim>
+bool FixRveServo<dim>::at_rest() const
+{
+  const double ekin = result_.ekin_epot * result_.contacts.potential_energy;
+  return relaxed_with(result_.contacts, ekin) && result_.residual <= servo_tol_;
 }
 
 template <int dim>

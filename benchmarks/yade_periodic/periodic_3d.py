@@ -128,6 +128,9 @@ ISO_MAX = 2000000    # steps, give up stage 1 after this
 REC_TOL = 5.0e-3     # relative servo stress error allowed at a record (safety net)
 HOLD_MAX = 50000     # steps, max pause at a record point
 SLIDE_TOL = 0.999    # a contact slides if |Fs| >= SLIDE_TOL * MU * Fn
+RELAX_EVERY = 0      # > 0: hold the cell fixed at every RELAX_EVERY-th record and relax (a probe, not the reference)
+RELAX_UNB = 1.0e-3   # unbalanced force that ends a hold
+RELAX_MAX = 1000000  # steps, longest hold
 
 
 fail = yade_common.make_fail("periodic_3d")
@@ -366,6 +369,18 @@ def control():
         return
     if st["stage"] != 2:
         return
+    # RELAX_EVERY > 0: at every RELAX_EVERY-th record the cell is held at rest
+    # (no drive, no servo) until the packing has relaxed: the stepped
+    # protocol's hold, measured against the continuous path (issue 35)
+    relax_here = (RELAX_EVERY > 0 and st["nrec"] > 0 and st["nrec"] % int(RELAX_EVERY) == 0
+                  and strain() >= st["next_rec"] - 1e-12)
+    if relax_here:
+        if not st["holding"]:
+            st["holding"], st["hold"] = True, 0
+        st["hold"] += NCTL
+        if st["hold"] < NCTL * 100 or (utils.unbalancedForce() > RELAX_UNB and st["hold"] < RELAX_MAX):
+            set_velgrad(0.0, 0.0, 0.0)
+            return
     if PATH == "triaxial":
         d = servo(s, (0, 1))
         drive = lambda on: set_velgrad(d[0], d[1], -RATE if on else 0.0)
@@ -382,7 +397,7 @@ def control():
     if eps >= st["next_rec"] - 1e-12:
         if err > REC_TOL and not st["holding"]:
             st["holding"], st["hold"] = True, 0
-        if st["holding"]:
+        if st["holding"] and not relax_here:
             st["hold"] += NCTL
             if err > 0.5 * REC_TOL and st["hold"] < HOLD_MAX:
                 drive(False)

@@ -104,6 +104,22 @@ void RveParameters::declare_parameters(dealii::ParameterHandler& prm)
                     "DEM steps between convergence checks (and C++ run chunk length).");
   prm.declare_entry("Step budget", "2000000", Integer(1),
                     "Largest number of DEM steps one RVE solve may take.");
+  prm.declare_entry("Solve drive", "servo iterations", Selection("servo iterations|continuous"),
+                    "How a quasi-static solve takes the RVE to a new F (timed solves of explicit "
+                    "dynamics are not affected). servo iterations ([LBS] R14): the frame moves "
+                    "to F X + w, the packing relaxes, the servo corrects w, and again until the "
+                    "frame is balanced. continuous: F is reached at 'Solve strain rate' by "
+                    "timed solves of 'Solve interval' DEM steps with the servo acting at every "
+                    "check, then held there until relaxed (Relaxation tolerance) and balanced "
+                    "(Servo tolerance): the continuous path, as a periodic cell is loaded and "
+                    "held (issue 35: the iterations' frame jumps lose stress; README, 'Solve "
+                    "drive').");
+  prm.declare_entry("Solve strain rate", "0.25", Double(0.0),
+                    "Solve drive = continuous: the largest |dF_ij/dt| [1/s] while F approaches "
+                    "its new value, > 0 (inertial number ~ rate d sqrt(rho/p)).");
+  prm.declare_entry("Solve interval", "200", Integer(1),
+                    "Solve drive = continuous: DEM steps per timed solve, a multiple of 'Check "
+                    "interval'; the held state is tested at the end of each.");
   prm.declare_entry("Template variables", "", Anything(),
                     "Further variables of the template that no entry above sets, as "
                     "'name value' pairs separated by commas, e.g. 'hertz 1, youngs 6.67e10' "
@@ -135,13 +151,21 @@ void RveParameters::parse_parameters(dealii::ParameterHandler& prm, const std::s
   step_budget = prm.get_integer("Step budget");
   membrane = prm.get("Frame membrane");
   max_overlap = prm.get_double("Max overlap");
+  solve_drive = prm.get("Solve drive");
+  solve_strain_rate = prm.get_double("Solve strain rate");
+  solve_interval = prm.get_integer("Solve interval");
   const std::string extra = prm.get("Template variables");
   prm.leave_subsection();
   template_variables = parse_template_variables(extra);
   require_positive("RVE", {{"Normal stiffness", kn}, {"Tangential stiffness", kt},
                            {"Time step", time_step}, {"Relaxation tolerance", relaxation_tolerance},
                            {"Servo tolerance", servo_tolerance}, {"Force gain", gain_a},
-                           {"Moment gain", gain_m}, {"Max overlap", max_overlap}});
+                           {"Moment gain", gain_m}, {"Max overlap", max_overlap},
+                           {"Solve strain rate", solve_strain_rate}});
+  if (solve_interval % check_interval != 0)
+    throw std::runtime_error("subsection RVE: 'Solve interval' = " + std::to_string(solve_interval) +
+                             " must be a multiple of 'Check interval' = " +
+                             std::to_string(check_interval) + " (a timed solve ends on a check)");
 }
 
 std::map<std::string, std::string> RveParameters::parse_template_variables(const std::string& text) const
@@ -208,6 +232,9 @@ RveSetup RveParameters::setup(const std::string& log_file) const
                  {"membrane", membrane},
                  {"max_overlap", number(max_overlap)}});
   s.variables.insert(template_variables.begin(), template_variables.end());
+  s.solve_drive = solve_drive == "continuous" ? SolveDrive::continuous : SolveDrive::servo_iterations;
+  s.solve_strain_rate = solve_strain_rate;
+  s.solve_interval = solve_interval;
   return s;
 }
 } // namespace fe2dem

@@ -42,6 +42,9 @@ struct RveParameters
   unsigned int check_interval, step_budget;
   std::string membrane; ///< yes | no: frame membrane of fix rve/servo
   double max_overlap;   ///< largest overlap / smaller radius
+  std::string solve_drive;       ///< servo iterations | continuous (RveSetup::solve_drive)
+  double solve_strain_rate;      ///< [1/s]
+  unsigned int solve_interval;   ///< DEM steps per timed solve of a continuous solve
   /// Further template variables (entry 'Template variables'), e.g. {"hertz", "1"}.
   std::map<std::string, std::string> template_variables;
 

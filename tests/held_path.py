@@ -6,9 +6,11 @@ stopping and relaxing loses nothing, as YADE's periodic cell held at fixed
 strain after loading at the same rate shows (benchmarks/rve_continuous).
 
 Usage:
-  held_path.py table RVE_CSV EVERY OUT     the rows of the isotropic stage and
+  held_path.py table RVE_CSV EVERY OUT [ROWS]
+                                           the rows of the isotropic stage and
                                            every EVERY-th row of the continuous
-                                           stage of RVE_CSV as a 3D 'Table file'
+                                           stage of RVE_CSV (of its first ROWS)
+                                           as a 3D 'Table file'
   held_path.py check REF_CSV HELD_CSV TOL [Q_TOL]
                                            the held rows against the reference
                                            rows with the same F: the axial
@@ -30,10 +32,10 @@ def F(r):
     return [float(r[n]) for n in F_NAMES]
 
 
-def table(rve_csv, every, out):
+def table(rve_csv, every, out, n_rows=None):
     rs = rows(rve_csv)
     iso = [r for r in rs[1:] if float(r["drive_time_s"]) == 0.0]
-    loading = [r for r in rs[1:] if float(r["drive_time_s"]) > 0.0]
+    loading = [r for r in rs[1:] if float(r["drive_time_s"]) > 0.0][:n_rows]
     if not iso or not loading:
         sys.exit(f"held_path.py: {rve_csv} has no isotropic or no continuous rows")
     with open(out, "w") as f:
@@ -73,8 +75,8 @@ def check(ref_csv, held_csv, tol, q_tol):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) == 5 and sys.argv[1] == "table":
-        table(sys.argv[2], int(sys.argv[3]), sys.argv[4])
+    if len(sys.argv) in (5, 6) and sys.argv[1] == "table":
+        table(sys.argv[2], int(sys.argv[3]), sys.argv[4], int(sys.argv[5]) if len(sys.argv) == 6 else None)
     elif len(sys.argv) in (5, 6) and sys.argv[1] == "check":
         tol = float(sys.argv[4])
         check(sys.argv[2], sys.argv[3], tol, float(sys.argv[5]) if len(sys.argv) == 6 else tol)

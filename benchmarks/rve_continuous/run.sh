@@ -8,13 +8,17 @@
 #                          at both rates on small_3d triaxial), lsyf_4096
 #                          triaxial at 0.25 and 0.125 /s to 3 %
 #   run.sh BUILD stepped   small_3d triaxial, stepped: 0.5 % and 0.25 % steps to 5 %, 0.1 % to 2.5 %
+#   run.sh BUILD held      the 0.25 /s paths of small_3d (to 3 %) and lsyf_1000 (to 2 %)
+#                          held at rest: their F every 0.5 % and 0.25 % as table
+#                          paths, 'Solve drive' = continuous and servo iterations
+#                          (also with the frame moved at ~0.25 /s)
 #   run.sh BUILD one_element  the continuous reference of benchmarks/one_element_3d
 #                          (lsyf_1000, axial y, Inner start affine) at 0.25 and
 #                          0.125 /s and keep at 0.25 /s
 #   run.sh BUILD biaxial_2d  2D: lbs_ref biaxial (benchmarks/frame_vs_periodic/biaxial.prm)
 #                          continuous at 0.1 /s, the rate of the 2D YADE reference
 #   run.sh BUILD tables    curves.py comparisons into results/*.txt
-#   run.sh BUILD all       the four in order
+#   run.sh BUILD all       all of them in order
 #
 # BUILD: the build directory (e.g. build). Runs one case at a time.
 set -euo pipefail
@@ -67,6 +71,27 @@ stepped() {
     read -r n strain <<<"$case"
     case_run "triaxial_small_3d_stepped_${n}" triaxial_small_3d.prm \
       "s/^\( *set Drive *=\).*/\1 stepped/; s/^\( *set Loading steps *=\).*/\1 $n/; s/^\( *set Axial strain *=\).*/\1 $strain/"
+  done
+}
+
+held() {
+  # the continuous path (0.25 /s) held at rest: its F at every 0.5 % (and
+  # 0.25 %) as table paths, each row one quasi-static solve, with each solve
+  # drive; small_3d to 3 %, lsyf_1000 to 2 %. 'iterations_slow': the servo
+  # iterations with the frame moved at about 0.25 /s (move_rate).
+  local packing every rows drive name move
+  for run in "small_3d 2 12" "small_3d 1 12" "lsyf_1000 2 8" "lsyf_1000 1 8"; do
+    read -r packing every rows <<<"$run"
+    for drive in continuous iterations iterations_slow; do
+      [[ $packing == lsyf_1000 && $every == 1 && $drive == iterations_slow ]] && continue
+      name="held_${packing}_${every}_${drive}"
+      mkdir -p "$results/$name"
+      /usr/bin/python3 "$root/tests/held_path.py" table "$results/triaxial_${packing}_0.25/rve.csv" "$every" \
+        "$results/$name/table.txt" "$rows"
+      move=""; [[ $drive == iterations_slow ]] && move="s/^\( *set Step budget.*\)/\1\n  set Template variables = move_rate $([[ $packing == small_3d ]] && echo 5e-6 || echo 2e-6)/;"
+      case_run "$name" "triaxial_${packing}.prm" \
+        "s|^\( *set Type *=\).*|\1 table\n  set Table file = $results/$name/table.txt|; $move s/^\( *set Servo tolerance .*\)/\1\n  set Solve drive = $([[ $drive == continuous ]] && echo continuous || echo servo iterations)/"
+    done
   done
 }
 
@@ -151,15 +176,24 @@ tables() {
     --plot "$results/vs_yade_proportional.png" --tables "$results/vs_yade_proportional.md" > "$results/vs_yade_proportional.txt"
   local b2="$results/biaxial_2d_lbs_ref_0.1/rve.csv"
   [[ -f "$b2" ]] && compare_2d "$b2" "$root/benchmarks/yade_periodic/results/lbs_ref_rate1.csv" > "$results/biaxial_2d_vs_yade.txt"
+  local h
+  for h in "$results"/held_*/rve.csv; do
+    [[ -f "$h" ]] || continue
+    local case_dir; case_dir="$(dirname "$h")"; local packing
+    packing="$(basename "$case_dir" | sed 's/^held_\(small_3d\|lsyf_1000\)_.*/\1/')"
+    /usr/bin/python3 "$root/tests/held_path.py" check "$results/triaxial_${packing}_0.25/rve.csv" "$h" 0.02 0.05 \
+      > "$case_dir/vs_continuous.txt" || true
+  done
   ls "$results"/*.txt
 }
 
 case "$what" in
   rates) rates ;;
   stepped) stepped ;;
+  held) held ;;
   tables) tables ;;
   one_element) one_element ;;
   biaxial_2d) biaxial_2d ;;
-  all) rates; stepped; one_element; biaxial_2d; tables ;;
+  all) rates; stepped; held; one_element; biaxial_2d; tables ;;
   *) sed -n '2,18p' "$0"; exit 2 ;;
 esac

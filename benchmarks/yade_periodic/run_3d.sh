@@ -3,8 +3,12 @@
 #
 #   benchmarks/yade_periodic/run_3d.sh [--force] [CASE ...]
 #
-# CASE = PACKING:PATH:RATE_FACTOR (PATH triaxial|shear, factor 1 = 0.25 /s,
-# 0.5 = 0.125 /s); default: small_3d and lsyf_1000, both paths, both rates.
+# CASE = PACKING:PATH:RATE_FACTOR[:NAME=VALUE+NAME=VALUE...] (PATH
+# triaxial|shear, factor 1 = 0.25 /s, 0.5 = 0.125 /s; the optional fourth
+# field overrides parameters of periodic_3d.py and names the CSV, e.g.
+# small_3d:triaxial:1:RELAX_EVERY=2+EPS_END=0.03 -> ..._rate1_RELAX_EVERY2_EPS_END0.03.csv,
+# the path held at rest every 0.5 %, issue 35); default: small_3d and
+# lsyf_1000, both paths, both rates.
 # Runs periodic_3d.py on rve_templates/packings/PACKING.periodic.data, one
 # YADE thread, one run after the other, into results_3d/PACKING_PATH_rateF.csv
 # (+ _trace.csv, .log).  A case whose CSV exists is skipped (a CSV is only
@@ -44,25 +48,30 @@ mkdir -p "$OUT"
 echo "yade_version $(dpkg-query -W -f='${Version}' yade 2>/dev/null || echo unknown) -"
 T0=$(date +%s.%N)
 for c in "${CASES[@]}"; do
-    IFS=: read -r name path f <<<"$c"
+    IFS=: read -r name path f extra <<<"$c"
+    overrides=(); tag=""
+    if [ -n "${extra:-}" ]; then
+        IFS=+ read -r -a overrides <<<"$extra"
+        tag="_$(echo "$extra" | tr -d '=' | tr '+' '_')"
+    fi
     data="$PACK/$name.periodic.data"
     [ -f "$data" ] || { echo "run_3d.sh: no packing $data" >&2; exit 1; }
-    csv="$OUT/${name}_${path}_rate$f.csv"
-    log="$OUT/${name}_${path}_rate$f.log"
+    csv="$OUT/${name}_${path}_rate$f$tag.csv"
+    log="$OUT/${name}_${path}_rate$f$tag.log"
     if [ -f "$csv" ] && [ $FORCE -eq 0 ]; then
         echo "run_3d.sh: $csv exists, skipped (--force to redo)" >&2
         continue
     fi
     rm -f "$csv" "${csv%.csv}_trace.csv"
     t1=$(date +%s.%N)
-    if ! yade -n -x -j1 "$HERE/periodic_3d.py" "$data" "$csv" "$path" "$f" >"$log" 2>&1 \
+    if ! yade -n -x -j1 "$HERE/periodic_3d.py" "$data" "$csv" "$path" "$f" ${overrides[@]+"${overrides[@]}"} >"$log" 2>&1 \
         || [ ! -f "$csv" ]; then
         echo "run_3d.sh: YADE run $c failed, see $log" >&2
         tail -n 20 "$log" >&2
         exit 1
     fi
     t2=$(date +%s.%N)
-    echo "${name}_${path}_rate${f}_wall_shell $(awk -v a="$t1" -v b="$t2" 'BEGIN{printf "%.1f", b-a}') s"
+    echo "${name}_${path}_rate${f}${tag}_wall_shell $(awk -v a="$t1" -v b="$t2" 'BEGIN{printf "%.1f", b-a}') s"
 done
 T3=$(date +%s.%N)
 

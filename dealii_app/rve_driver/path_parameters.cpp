@@ -66,12 +66,19 @@ void PathParameters::declare_parameters(dealii::ParameterHandler& prm)
                     "inertial number this is the rate-independent quasi-static response, "
                     "checked against YADE's periodic cell (benchmarks/rve_continuous). stepped: "
                     "each load step is relaxed and servo-converged at its F, the stress-"
-                    "controlled components found by secant iterations ([LBS]); a frictional "
-                    "packing relaxed at fixed strain loses stress, so this path lies below the "
-                    "continuous one and approaches it only slowly as the steps get finer "
-                    "(small_3d triaxial: up to -40 % in 0.5 % steps, -9 % in 0.1 % steps). The "
-                    "isotropic stage and Type = isotropic and table are stepped whatever is set "
-                    "here.");
+                    "controlled components found by secant iterations ([LBS]); it lies below "
+                    "the continuous path and approaches it only slowly as the steps get finer "
+                    "(small_3d triaxial: up to -40 % in 0.5 % steps, -9 % in 0.1 % steps), "
+                    "mostly because of the servo iterations of each solve (RVE 'Solve drive') "
+                    "and the trials of the secant iterations. The isotropic stage and Type = "
+                    "isotropic and table are stepped whatever is set here.");
+  prm.declare_entry("Hold rows", "0", Integer(0),
+                    "Drive = continuous: every 'Hold rows'-th row is held at rest before it is "
+                    "written: the drive stops, timed solves at the row's F (the servo acting at "
+                    "every check) run until the RVE is relaxed and balanced ('Relaxation "
+                    "tolerance', 'Servo tolerance'), and the drive goes on from there; as YADE's "
+                    "periodic cell held at fixed strain (benchmarks/yade_periodic, RELAX_EVERY). "
+                    "0: no hold.");
   prm.declare_entry("Strain rate", "0.25", Double(0.0),
                     "continuous: the axial compressive strain rate (biaxial, triaxial: d(1 - "
                     "F_axial/F_axial,ic)/dt) or the shear rate dF12/dt (simple shear) [1/s], > 0. "
@@ -107,6 +114,7 @@ void PathParameters::parse_parameters(dealii::ParameterHandler& prm, const std::
   continuous = prm.get("Drive") == "continuous";
   strain_rate = prm.get_double("Strain rate");
   control_interval = prm.get_integer("Control interval");
+  hold_rows = prm.get_integer("Hold rows");
   shear_normal_stress = prm.get_bool("Shear normal stress");
   prm.leave_subsection();
   if (type == "isotropic" && (pressure <= 0.0 || isotropic_steps == 0))

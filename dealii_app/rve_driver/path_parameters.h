@@ -36,6 +36,7 @@ struct PathParameters
   bool continuous = true;
   double strain_rate;             ///< continuous: axial compression or shear rate [1/s]
   unsigned int control_interval;  ///< continuous: DEM steps per timed solve (stress control update)
+  unsigned int hold_rows = 0;     ///< continuous: every hold_rows-th row held at rest (0: none)
   bool shear_normal_stress;       ///< simple shear: hold sigma22 = -Pressure through F22
 
   static void declare_parameters(dealii::ParameterHandler& prm);

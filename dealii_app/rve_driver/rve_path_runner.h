@@ -46,6 +46,8 @@ private:
   void run_shear_stage();
   /// Drive = continuous: the biaxial, triaxial or simple shear stage at 'Strain rate'.
   void run_continuous_stage();
+  /// Drive = continuous, 'Hold rows': timed solves at the current F until the RVE is at rest.
+  void hold_at_rest();
   /// The stress-controlled components of the loading stage and their targets.
   std::pair<std::vector<int>, std::vector<double>> loading_controls() const;
   void run_table();

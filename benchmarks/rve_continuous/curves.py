@@ -2,15 +2,17 @@
 """Reads fe2dem-rve's rve.csv (3D) as loading curves and compares them.
 
 Usage:
-  curves.py [--iso N] show RVE_CSV                  the curve, one line per row
-  curves.py [--iso N] compare REF_CSV OTHER_CSV...  each OTHER against REF at REF's strains
+  curves.py [--iso N] [--prepared P] show RVE_CSV                  the curve, one line per row
+  curves.py [--iso N] [--prepared P] compare REF_CSV OTHER_CSV...  each OTHER against REF at REF's strains
 
 The loading stage starts at the last row of the isotropic stage: row
 --iso N (N = 'Isotropic steps'; N = 0 is the packing as relaxed) or, for a
 continuous drive, the row before the first with drive_time_s > 0. Strain: triaxial e_a = 1 - F_aa/F_aa,ic (a the axial direction: the normal
 component of F that moved most), simple shear gamma = F12. fe2dem's
 summary.csv of a one-element triaxial test (axial y) is read too: the
-loading rows after stage 1, strain from its axial_strain column.
+loading rows after stage 1, strain from its axial_strain column; with
+--prepared P (RVEs prepared at 'Initial pressure' P, boundary conditions,
+no stage 1) all its rows, after a start at zero strain and sigma = -P I.
 Stresses are Cauchy (sigma), tension positive; p = -tr(sigma)/3; triaxial
 ratio q/p with q = (lateral sum)/2 - sigma_aa (compression positive),
 simple shear ratio tau/p with tau = |sigma12|. Volumetric strain det F/det F_ic - 1.
@@ -29,11 +31,19 @@ def det3(F):
 
 
 ISO = None  # --iso N
+PREPARED = None  # --prepared PRESSURE
 
 
 def load_summary(path, raw):
-    """fe2dem's summary.csv of a one-element triaxial test (axial y): the rows after stage 1."""
-    start = max(k for k, r in enumerate(raw) if r["stage"] == 1)
+    """fe2dem's summary.csv of a one-element triaxial test (axial y): the rows after stage 1, or
+    (boundary conditions, RVEs prepared at a pressure: no stage 1) all rows after a start row
+    at zero strain, isotropic at the 'Initial pressure' PRESSURE (--prepared PRESSURE)."""
+    if PREPARED is not None:
+        start = 0
+        raw = [dict(raw[0], axial_strain=0.0, sigma11_mean=-PREPARED, sigma22_mean=-PREPARED,
+                    sigma33_mean=-PREPARED, J_rel_mean=0.0)] + raw
+    else:
+        start = max(k for k, r in enumerate(raw) if r["stage"] == 1)
     rows = []
     for r in raw[start:]:
         s11, s22, s33 = r["sigma11_mean"], r["sigma22_mean"], r["sigma33_mean"]
@@ -120,8 +130,11 @@ def compare(ref_path, others):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) >= 3 and sys.argv[1] == "--iso":
-        ISO = int(sys.argv[2])
+    while len(sys.argv) >= 3 and sys.argv[1] in ("--iso", "--prepared"):
+        if sys.argv[1] == "--iso":
+            ISO = int(sys.argv[2])
+        else:
+            PREPARED = float(sys.argv[2])
         del sys.argv[1:3]
     if len(sys.argv) >= 3 and sys.argv[1] == "show":
         kind, rows = load(sys.argv[2])

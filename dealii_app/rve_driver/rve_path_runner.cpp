@@ -133,10 +133,25 @@ const typename RvePathRunner<dim>::Result& RvePathRunner<dim>::solve(const Matri
   }
   catch (const fe2dem::RveSolveError& e)
   {
-    // Name the step; the rows before it are complete and stay.
-    throw std::runtime_error("the RVE solve of step " + std::to_string(step_) + " failed: " +
-                             e.what() + (step_ == 0 ? std::string(". rve.csv holds no step")
-                                                     : ". rve.csv holds steps 0 to " + std::to_string(step_ - 1)));
+    // Name the step; the rows before it are complete and stay. A solve that
+    // ran out of steps because the packing never met the relaxation
+    // criterion (small_3d, 'Isotropic steps' = 1, 'Inner start' = affine:
+    // E_kin/E_pot stayed at 1.05e-3 for 4e6 steps, issue 35) gets the
+    // settings measured to get past it.
+    const Result& r = rve_.result();
+    const bool never_relaxed = e.status == Fix::over_budget && rve_.fix().timed_steps() == 0 &&
+                               prm_.rve.relaxation_criterion == "ekin_epot" &&
+                               r.ekin_epot > prm_.rve.relaxation_tolerance;
+    const std::string hint =
+      never_relaxed ? ". The packing never relaxed: E_kin/E_pot = " + std::to_string(r.ekin_epot) +
+                        " > 'Relaxation tolerance' = " + std::to_string(prm_.rve.relaxation_tolerance) +
+                        "; 'Solve drive' = continuous or 'Inner start' = keep get past this (measured on "
+                        "small_3d), or raise 'Relaxation tolerance'"
+                    : std::string();
+    throw std::runtime_error("the RVE solve of step " + std::to_string(step_) + " failed: " + e.what() +
+                             hint +
+                             (step_ == 0 ? std::string(". rve.csv holds no step")
+                                         : ". rve.csv holds steps 0 to " + std::to_string(step_ - 1)));
   }
   const Result& r = rve_.result();
   dem_steps_in_step_ += r.dem_steps;

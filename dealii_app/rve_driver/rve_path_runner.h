@@ -34,6 +34,7 @@ public:
 
 private:
   using Result = typename ServoRve<dim>::Result;
+  using Fix = typename ServoRve<dim>::Fix;
   using Matrix = Mat<dim>;
   /// Row-major index of the axial F component: F22 in 2D, F33 (or F22 with 'Axial direction' = y) in 3D.
   const int axial;

@@ -12,6 +12,7 @@
 #                          held at rest: their F every 0.5 % and 0.25 % as table
 #                          paths, 'Solve drive' = continuous and servo iterations
 #                          (also with the frame moved at ~0.25 /s)
+#   run.sh BUILD holds     the 0.25 /s paths to 3 % held at rest every 0.5 % ('Hold rows' = 2)
 #   run.sh BUILD one_element  the continuous reference of benchmarks/one_element_3d
 #                          (lsyf_1000, axial y, Inner start affine) at 0.25 and
 #                          0.125 /s and keep at 0.25 /s
@@ -92,6 +93,16 @@ held() {
       case_run "$name" "triaxial_${packing}.prm" \
         "s|^\( *set Type *=\).*|\1 table\n  set Table file = $results/$name/table.txt|; $move s/^\( *set Servo tolerance .*\)/\1\n  set Solve drive = $([[ $drive == continuous ]] && echo continuous || echo servo iterations)/"
     done
+  done
+}
+
+holds() {
+  # the continuous drive (0.25 /s) held at rest at every 0.5 % ('Hold rows' =
+  # 2) to 3 %, against YADE's held cell (../yade_periodic, RELAX_EVERY=2)
+  local packing
+  for packing in small_3d lsyf_1000; do
+    case_run "hold_rows_${packing}" "triaxial_${packing}.prm" \
+      "s/^\( *set Loading steps *=\).*/\1 12/; s/^\( *set Axial strain *=\).*/\1 0.03/; s/^\( *set Drive .*\)/\1\n  set Hold rows = 2/"
   done
 }
 
@@ -176,6 +187,15 @@ tables() {
     --plot "$results/vs_yade_proportional.png" --tables "$results/vs_yade_proportional.md" > "$results/vs_yade_proportional.txt"
   local b2="$results/biaxial_2d_lbs_ref_0.1/rve.csv"
   [[ -f "$b2" ]] && compare_2d "$b2" "$root/benchmarks/yade_periodic/results/lbs_ref_rate1.csv" > "$results/biaxial_2d_vs_yade.txt"
+  local y="$root/benchmarks/yade_periodic/results_3d" packing_h
+  for packing_h in small_3d lsyf_1000; do
+    local held_y="$y/${packing_h}_triaxial_rate1_RELAX_EVERY2_EPS_END0.03.csv"
+    [[ -f "$held_y" ]] && "$here/holds.py" yade "$y/${packing_h}_triaxial_rate1.csv" "$held_y" \
+      > "$results/holds_yade_${packing_h}.txt"
+    [[ -f "$results/hold_rows_${packing_h}/rve.csv" ]] && "$here/holds.py" rve \
+      "$results/triaxial_${packing_h}_0.25/rve.csv" "$results/hold_rows_${packing_h}/rve.csv" 2 \
+      > "$results/holds_rve_${packing_h}.txt"
+  done
   local h
   for h in "$results"/held_*/rve.csv; do
     [[ -f "$h" ]] || continue
@@ -191,9 +211,10 @@ case "$what" in
   rates) rates ;;
   stepped) stepped ;;
   held) held ;;
+  holds) holds ;;
   tables) tables ;;
   one_element) one_element ;;
   biaxial_2d) biaxial_2d ;;
-  all) rates; stepped; held; one_element; biaxial_2d; tables ;;
+  all) rates; stepped; held; holds; one_element; biaxial_2d; tables ;;
   *) sed -n '2,18p' "$0"; exit 2 ;;
 esac

@@ -11,15 +11,20 @@
 #              triaxial one quasi-static (dynamic relaxation in 8 steps)
 #              against the single RVE in the same relaxed steps and
 #              continuously (problem1_triaxial_{quasi_static,rve_stepped}.prm)
+#   modulus    the RVE's constrained modulus under a sinusoidal strain of
+#              amplitude 1e-4 at 2.5 and 10 kHz (constrained_modulus.prm
+#              driven by a sine; lsyf_4096, also with the proportional frame
+#              servo and without Cundall damping at 10 kHz, and lsyf_1000):
+#              results/dynamic_modulus.txt
 #   tables     the comparison tables from what exists
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
 # result exists is not run again.
 #
-#   run.sh BUILD wave|problem1|tables|all
+#   run.sh BUILD wave|problem1|modulus|tables|all
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-[[ $# -eq 2 ]] || { sed -n '2,16p' "$0"; exit 2; }
+[[ $# -eq 2 ]] || { sed -n '2,21p' "$0"; exit 2; }
 build="$(cd "$1" && pwd)"
 what=$2
 results="$here/results"
@@ -84,6 +89,40 @@ wave_table() {
   } 2>&1 | tee "$r/wave_column.txt"
 }
 
+# the sine instead of constrained_modulus.prm's ramp: FREQ Hz over PERIODS periods, a row every 5 us
+sine() {
+  local f=$1 periods=$2
+  local end; end=$(awk -v f="$f" -v n="$periods" 'BEGIN {printf "%.6g", n / f}')
+  local rows; rows=$(awk -v e="$end" 'BEGIN {printf "%d", e / 5e-6 + 0.5}')
+  echo "s#-1e-6 \* t / 0.004#-1e-6 * sin(2 * pi * $f * t)#; s#set End time   = 0.004#set End time   = $end#; s#set Load steps = 20#set Load steps = $rows#; s#^  set Analysis     = dynamic#  set Analysis     = dynamic\n  set Time step    = 1e-6#"
+}
+modulus() {
+  local prm="$here/constrained_modulus.prm"
+  local prop="s#hertz 1, youngs#timed_servo proportional, hertz 1, youngs#"
+  local nodamp="s#^\(  set Friction .*\)#\1\n  set Local damping force  = 0\n  set Local damping moment = 0#"
+  local small="s#packings/lsyf_4096#packings/lsyf_1000#"
+  run_macro modulus_lsyf_4096_2.5kHz "$prm" 1 "$(sine 2.5e3 2)"
+  run_macro modulus_lsyf_4096_10kHz "$prm" 1 "$(sine 1e4 3)"
+  run_macro modulus_lsyf_4096_10kHz_proportional "$prm" 1 "$(sine 1e4 3); $prop"
+  run_macro modulus_lsyf_4096_10kHz_no_damping "$prm" 1 "$(sine 1e4 3); $nodamp"
+  run_macro modulus_lsyf_1000_2.5kHz "$prm" 1 "$(sine 2.5e3 2); $small"
+  run_macro modulus_lsyf_1000_10kHz "$prm" 1 "$(sine 1e4 3); $small"
+  modulus_table
+}
+modulus_table() {
+  local c
+  {
+    echo "# case M_dyn[MPa] mean_sigma_yy[Pa] phase_lag[deg] (fit over the last period(s))"
+    for c in lsyf_4096_2.5kHz lsyf_4096_10kHz lsyf_4096_10kHz_proportional lsyf_4096_10kHz_no_damping \
+      lsyf_1000_2.5kHz lsyf_1000_10kHz; do
+      local d="$results/modulus_$c/out" f=1e4 t=1e-4
+      [[ $c == *2.5kHz* ]] && { f=2.5e3; t=4e-4; }
+      [[ -f "$d/history.h5" ]] || continue
+      echo "$c $($py "$here/dynamic_modulus.py" "$d" $f $t | awk '{print $2}' | head -3 | tr '\n' ' ')"
+    done
+  } | tee "$results/dynamic_modulus.txt"
+}
+
 problem1() {
   run_rve problem1_triaxial_rve "$here/problem1_triaxial_rve.prm" &
   run_macro problem1_triaxial_dynamic "$here/problem1_triaxial_dynamic.prm" 1
@@ -117,7 +156,8 @@ mkdir -p "$results"
 case "$what" in
   wave) wave ;;
   problem1) problem1 ;;
-  tables) wave_table; problem1_tables ;;
-  all) wave; problem1 ;;
-  *) sed -n '2,16p' "$0"; exit 2 ;;
+  modulus) modulus ;;
+  tables) wave_table; problem1_tables; modulus_table ;;
+  all) wave; problem1; modulus ;;
+  *) sed -n '2,21p' "$0"; exit 2 ;;
 esac

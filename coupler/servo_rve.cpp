@@ -157,11 +157,16 @@ const typename ServoRve<dim>::Result& ServoRve<dim>::solve(const Matrix& F, long
   if (mode_ == HistoryMode::committed && !at_committed_state_)
     rollback();
   at_committed_state_ = false;
-  const bool bounded = timed_steps_ == 0 && limit_steps(step_limit);
   continuous_last_ = false;
-  if (timed_steps_ == 0 && !stretch_next_ && setup_.solve_drive == SolveDrive::continuous)
+  const bool continuous = timed_steps_ == 0 && !stretch_next_ && setup_.solve_drive == SolveDrive::continuous;
+  if (continuous && step_limit > 0)
+    throw std::logic_error("ServoRve::solve: a step limit with 'Solve drive' = continuous (multiple "
+                           "time stepping drives the RVE at the pace of the macro iterations; fe2dem "
+                           "refuses the combination)");
+  const bool bounded = timed_steps_ == 0 && limit_steps(step_limit);
+  if (continuous)
   {
-    solve_continuously(F, bounded ? fix_->max_steps() : 0);
+    solve_continuously(F);
     return result();
   }
   if (fix_->timed_steps() != timed_steps_)
@@ -180,11 +185,9 @@ const typename ServoRve<dim>::Result& ServoRve<dim>::solve(const Matrix& F, long
 // or below solve_strain_rate; the servo acts at every check (with integral
 // action, fix_rve_servo_timed.tpp) instead of in relax-then-correct rounds,
 // whose jumps of the frame shake the packing out of the state the continuous
-// path holds. The hold repeats timed solves at F until the fix's own test
-// (relaxed, balanced) passes at the end of one. A bounded solve (multiple
-// time stepping) is one timed solve of its step limit towards F.
+// path holds. Then the hold (hold_until_at_rest).
 template <int dim>
-void ServoRve<dim>::solve_continuously(const Matrix& F, long step_limit)
+void ServoRve<dim>::solve_continuously(const Matrix& F)
 {
   const Matrix F_from = mode_ == HistoryMode::committed ? committed_F_ : fix_->result().F;
   double largest = 0.0;
@@ -192,56 +195,75 @@ void ServoRve<dim>::solve_continuously(const Matrix& F, long step_limit)
     largest = std::max(largest, std::abs(F[k] - F_from[k]));
   const long interval = setup_.solve_interval;
   const double interval_time = interval * instance_->lammps()->update->dt;
-  long steps = 0, membrane_steps = 0;
-  int solves = 0;
-  auto timed_solve = [&](const Matrix& target, long n) {
-    fix_->set_timed_steps(n);
-    fix_->set_deformation(target);
-    run_until_done(); // a timed solve ends converged; a failure throws
-    steps += fix_->result().dem_steps;
-    membrane_steps += fix_->result().membrane_steps;
-    ++solves;
-  };
-  struct QuasiStaticAgain // the fix back to quasi-static solves, also after a failure
+  TimedTally tally;
+  const TimedStepsAgain again{this};
+  const long ramp = static_cast<long>(std::ceil(largest / (setup_.solve_strain_rate * interval_time) - 1e-9));
+  for (long k = 1; k <= ramp; ++k)
   {
-    ServoRve* rve;
-    ~QuasiStaticAgain() { rve->fix_->set_timed_steps(0); }
-  } again{this};
-  if (step_limit > 0)
-  {
-    timed_solve(F, step_limit);
-    last_converged_ = fix_->at_rest();
+    Matrix F_k;
+    for (std::size_t c = 0; c < F.size(); ++c)
+      F_k[c] = F_from[c] + (static_cast<double>(k) / ramp) * (F[c] - F_from[c]);
+    timed_solve(k == ramp ? F : F_k, interval, tally);
   }
-  else
+  hold_until_at_rest(F, interval, tally);
+  publish(tally);
+}
+
+template <int dim>
+const typename ServoRve<dim>::Result& ServoRve<dim>::hold_at_rest(const Matrix& F)
+{
+  if (timed_steps_ <= 0)
+    throw std::logic_error("ServoRve::hold_at_rest needs timed solves (set_timed_steps)");
+  at_committed_state_ = false;
+  continuous_last_ = false;
+  TimedTally tally;
+  const TimedStepsAgain again{this};
+  hold_until_at_rest(F, timed_steps_, tally);
+  publish(tally);
+  return result();
+}
+
+template <int dim>
+void ServoRve<dim>::timed_solve(const Matrix& F, long steps, TimedTally& tally)
+{
+  fix_->set_timed_steps(steps);
+  fix_->set_deformation(F);
+  run_until_done(); // a timed solve ends converged; a failure throws
+  tally.dem_steps += fix_->result().dem_steps;
+  tally.membrane_steps += fix_->result().membrane_steps;
+  ++tally.solves;
+}
+
+// Timed solves at F until the fix's own quasi-static test (relaxed,
+// balanced) passes at the end of one, all of them, the approach of a
+// continuous solve included, within the step budget.
+template <int dim>
+void ServoRve<dim>::hold_until_at_rest(const Matrix& F, long steps, TimedTally& tally)
+{
+  do
   {
-    const long ramp = static_cast<long>(std::ceil(largest / (setup_.solve_strain_rate * interval_time) - 1e-9));
-    for (long k = 1; k <= ramp; ++k)
+    if (tally.dem_steps + steps > budget_)
     {
-      Matrix F_k;
-      for (std::size_t c = 0; c < F.size(); ++c)
-        F_k[c] = F_from[c] + (static_cast<double>(k) / ramp) * (F[c] - F_from[c]);
-      timed_solve(k == ramp ? F : F_k, interval);
+      last_converged_ = false;
+      const Result& r = fix_->result();
+      throw RveSolveError(Fix::over_budget,
+                          std::string(Fix::status_name(Fix::over_budget)) +
+                            ": the RVE held at its F is not at rest within the step budget of " +
+                            std::to_string(budget_) + " DEM steps (r_a = " + std::to_string(r.residual) +
+                            ", E_kin/E_pot = " + std::to_string(r.ekin_epot) + ")");
     }
-    do
-    {
-      if (steps + interval > budget_)
-      {
-        last_converged_ = false;
-        const Result& r = fix_->result();
-        throw RveSolveError(Fix::over_budget,
-                            std::string(Fix::status_name(Fix::over_budget)) +
-                              ": continuous solve not at rest within the step budget of " +
-                              std::to_string(budget_) + " DEM steps (r_a = " + std::to_string(r.residual) +
-                              ", E_kin/E_pot = " + std::to_string(r.ekin_epot) + ")");
-      }
-      timed_solve(F, interval);
-    } while (!fix_->at_rest());
-    last_converged_ = true;
-  }
+    timed_solve(F, steps, tally);
+  } while (!fix_->at_rest());
+  last_converged_ = true;
+}
+
+template <int dim>
+void ServoRve<dim>::publish(const TimedTally& tally)
+{
   continuous_result_ = fix_->result();
-  continuous_result_.dem_steps = steps;
-  continuous_result_.membrane_steps = membrane_steps;
-  continuous_result_.servo_iterations = solves;
+  continuous_result_.dem_steps = tally.dem_steps;
+  continuous_result_.membrane_steps = tally.membrane_steps;
+  continuous_result_.servo_iterations = tally.solves;
   continuous_last_ = true;
 }
 

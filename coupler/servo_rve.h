@@ -105,9 +105,20 @@ public:
   double last_solve_loop_seconds() const override { return last_loop_seconds_; }
   void write_particles(const std::string& prefix, long timestep) const override;
 
-  /// The last solve's result; after a continuous solve (RveSetup::solve_drive) that of its last
-  /// timed solve, with dem_steps and membrane_steps summed over all and servo_iterations = their number.
+  /// The last solve's result; after a continuous solve (RveSetup::solve_drive) or hold_at_rest() that
+  /// of its last timed solve, with dem_steps and membrane_steps summed over all and servo_iterations =
+  /// their number.
   const Result& result() const { return continuous_last_ ? continuous_result_ : fix_->result(); }
+  /**
+   * Holds the RVE at @p F: timed solves of set_timed_steps() steps, the
+   * servo acting at every check, until the fix's quasi-static test passes
+   * at the end of one (FixRveServo::at_rest(): relaxed and balanced).
+   * result() is then the last one's, with dem_steps and membrane_steps
+   * summed over all and servo_iterations = their number.
+   * @pre set_timed_steps(n) with n > 0.
+   * @throws RveSolveError (over budget) if not at rest within the step budget.
+   */
+  const Result& hold_at_rest(const Matrix& F);
   Fix& fix() { return *fix_; }
   LiggghtsInstance& instance() { return *instance_; }
   HistoryMode history_mode() const { return mode_; }
@@ -122,7 +133,25 @@ private:
   void open_instance(const std::string& restart_file);
   void run_until_done(bool bounded = false);
   /// solve() with SolveDrive::continuous: approach F at the solve strain rate, hold until at rest.
-  void solve_continuously(const Matrix& F, long step_limit);
+  void solve_continuously(const Matrix& F);
+  /// DEM steps, membrane steps and timed solves of a continuous solve or a hold, so far.
+  struct TimedTally
+  {
+    long dem_steps = 0, membrane_steps = 0;
+    int solves = 0;
+  };
+  /// One timed solve of @p steps DEM steps towards @p F, counted in @p tally.
+  void timed_solve(const Matrix& F, long steps, TimedTally& tally);
+  /// Timed solves of @p steps at @p F until FixRveServo::at_rest(), the budget counting all of @p tally.
+  void hold_until_at_rest(const Matrix& F, long steps, TimedTally& tally);
+  /// The result of a continuous solve or hold: the fix's last one with @p tally's sums.
+  void publish(const TimedTally& tally);
+  /// Gives the fix back this RVE's timed steps (0: quasi-static solves), also after a failure.
+  struct TimedStepsAgain
+  {
+    ServoRve* rve;
+    ~TimedStepsAgain() { rve->fix_->set_timed_steps(rve->timed_steps_); }
+  };
   /// Rebuilds the instance @p e left half-way from the committed state; throws RveSolveError.
   [[noreturn]] void recover_from(const std::exception& e);
   /// Sets the fix's step budget for the next solve: @p step_limit or the template's budget.

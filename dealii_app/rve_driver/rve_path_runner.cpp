@@ -125,11 +125,14 @@ void RvePathRunner<dim>::write_row(const Result& r, unsigned int stress_iteratio
 }
 
 template <int dim>
-const typename RvePathRunner<dim>::Result& RvePathRunner<dim>::solve(const Matrix& F)
+const typename RvePathRunner<dim>::Result& RvePathRunner<dim>::solve(const Matrix& F, bool hold)
 {
   try
   {
-    rve_.solve(F);
+    if (hold)
+      rve_.hold_at_rest(F);
+    else
+      rve_.solve(F);
   }
   catch (const fe2dem::RveSolveError& e)
   {
@@ -140,6 +143,7 @@ const typename RvePathRunner<dim>::Result& RvePathRunner<dim>::solve(const Matri
     // settings measured to get past it.
     const Result& r = rve_.result();
     const bool never_relaxed = e.status == Fix::over_budget && rve_.fix().timed_steps() == 0 &&
+                               prm_.rve.solve_drive != "continuous" &&
                                prm_.rve.relaxation_criterion == "ekin_epot" &&
                                r.ekin_epot > prm_.rve.relaxation_tolerance;
     const std::string hint =

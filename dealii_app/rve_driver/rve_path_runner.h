@@ -47,8 +47,6 @@ private:
   void run_shear_stage();
   /// Drive = continuous: the biaxial, triaxial or simple shear stage at 'Strain rate'.
   void run_continuous_stage();
-  /// Drive = continuous, 'Hold rows': timed solves at the current F until the RVE is at rest.
-  void hold_at_rest();
   /// The stress-controlled components of the loading stage and their targets.
   std::pair<std::vector<int>, std::vector<double>> loading_controls() const;
   void run_table();
@@ -75,8 +73,9 @@ private:
                                   const std::vector<double>& targets, const std::string& what,
                                   bool F_moved_elsewhere = false);
 
-  /// One RVE solve; its DEM and membrane steps count towards the step's row.
-  const Result& solve(const Matrix& F);
+  /// One RVE solve, or with @p hold ServoRve::hold_at_rest() at F ('Hold rows'); its DEM and
+  /// membrane steps count towards the step's row.
+  const Result& solve(const Matrix& F, bool hold = false);
 
   const Parameters& prm_;
   ServoRve<dim> rve_;

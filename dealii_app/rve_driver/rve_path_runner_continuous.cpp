@@ -90,37 +90,17 @@ void RvePathRunner<dim>::run_continuous_stage()
       error = control.largest_error(rve_.result().sigma) / scale;
     }
     control_error_ = comps.empty() ? 0.0 : error;
+    // 'Hold rows': the strain held (the stress-controlled components not
+    // corrected), as YADE's cell at rest, until the RVE is at rest
     if (prm_.path.hold_rows > 0 && row % prm_.path.hold_rows == 0)
-      hold_at_rest();
+      solve(F_, true);
     write_row(rve_.result(), 0);
   }
   rve_.set_timed_steps(0);
 }
 
-// 'Hold rows': timed solves at the current F, the servo acting at every
-// check, until the fix's quasi-static test (relaxed, balanced) passes at the
-// end of one; the stress-controlled components are not corrected meanwhile
-// (the strain is held, as YADE's cell at rest).
-template <int dim>
-void RvePathRunner<dim>::hold_at_rest()
-{
-  const long budget = prm_.rve.step_budget;
-  long held = 0;
-  do
-  {
-    if (held >= budget)
-      throw std::runtime_error("step " + std::to_string(step_) + ": the held RVE is not at rest within "
-                               "'Step budget' = " + std::to_string(budget) + " DEM steps (r_a = " +
-                               std::to_string(rve_.result().residual) + ", E_kin/E_pot = " +
-                               std::to_string(rve_.result().ekin_epot) + "); raise it or the tolerances");
-    held += solve(F_).dem_steps;
-  } while (!rve_.fix().at_rest());
-}
-
 // The rest of the class is instantiated in rve_path_runner.cpp.
 template void RvePathRunner<2>::run_continuous_stage();
-template void RvePathRunner<2>::hold_at_rest();
-template void RvePathRunner<3>::hold_at_rest();
 template void RvePathRunner<3>::run_continuous_stage();
 template std::pair<std::vector<int>, std::vector<double>> RvePathRunner<2>::loading_controls() const;
 template std::pair<std::vector<int>, std::vector<double>> RvePathRunner<3>::loading_controls() const;

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <fstream>
+#include <limits>
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
@@ -48,6 +51,98 @@ void require_positive(const std::string& subsection,
                                " must be > 0");
 }
 
+namespace
+{
+/// Entry name of each template variable that may be left to the template.
+const std::map<std::string, std::string> entry_of = {
+  {"mu", "Friction"}, {"kn", "Normal stiffness"}, {"kt", "Tangential stiffness"},
+  {"dt", "Time step"}, {"servo_scale", "Servo residual scale"}};
+
+/// The default `variable NAME index VALUE` lines of a LIGGGHTS template.
+std::map<std::string, std::pair<std::string, int>> template_index_variables(const std::string& file)
+{
+  std::map<std::string, std::pair<std::string, int>> out;
+  std::ifstream in(file);
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number)
+  {
+    std::istringstream words(line.substr(0, line.find('#')));
+    std::string command, name, style, value;
+    if (words >> command >> name >> style >> value && command == "variable" && style == "index")
+      out.emplace(name, std::pair{value, number});
+  }
+  return out;
+}
+
+double to_number(const std::string& text, const std::string& what)
+{
+  std::size_t used = 0;
+  double v = std::numeric_limits<double>::quiet_NaN();
+  try
+  {
+    v = std::stod(text, &used);
+  }
+  catch (const std::exception&)
+  {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !std::isfinite(v))
+    throw std::runtime_error(what + " = '" + text + "' is not a finite number");
+  return v;
+}
+} // namespace
+
+void RveParameters::take_template_defaults(const std::map<std::string, std::string>& given)
+{
+  std::map<std::string, std::string> value = given;
+  bool any_from_template = false;
+  for (const auto& [variable, text] : given)
+    any_from_template |= text == "template";
+  if (any_from_template)
+  {
+    // fe2dem with a continuum material never builds an RVE: a missing
+    // template is reported by check_files() when one is needed.
+    if (!std::filesystem::is_regular_file(template_file))
+    {
+      friction = kn = kt = time_step = std::numeric_limits<double>::quiet_NaN();
+      servo_scale = "template";
+      return;
+    }
+    const auto defaults = template_index_variables(template_file);
+    for (auto& [variable, text] : value)
+      if (text == "template")
+      {
+        const auto it = defaults.find(variable);
+        if (it == defaults.end())
+          throw std::runtime_error("subsection RVE: '" + entry_of.at(variable) +
+                                   "' = template, but the template " + template_file +
+                                   " has no line 'variable " + variable +
+                                   " index VALUE'; give the entry a value");
+        text = it->second.first;
+        if (variable == "servo_scale" && text != "inertia" && text != "contact")
+          throw std::runtime_error(template_file + ":" + std::to_string(it->second.second) +
+                                   ": variable servo_scale = '" + text + "' must be inertia or contact");
+      }
+  }
+  // given[variable] is the entry's text or 'template' (then value[] is the template's).
+  const auto entry = [&](const std::string& variable, bool zero_allowed) {
+    const std::string what = given.at(variable) == "template"
+                               ? "subsection RVE: '" + entry_of.at(variable) + "' = template: " +
+                                   template_file + ": variable " + variable
+                               : "subsection RVE: '" + entry_of.at(variable) + "'";
+    const double v = to_number(value.at(variable), what);
+    if (v < 0.0 || (v == 0.0 && !zero_allowed))
+      throw std::runtime_error(what + " = '" + value.at(variable) + "' must be " +
+                               (zero_allowed ? ">= 0" : "> 0"));
+    return v;
+  };
+  friction = entry("mu", true);
+  kn = entry("kn", false);
+  kt = entry("kt", false);
+  time_step = entry("dt", false);
+  servo_scale = value.at("servo_scale");
+}
+
 void RveParameters::declare_parameters(dealii::ParameterHandler& prm)
 {
   prm.enter_subsection("RVE");
@@ -57,12 +152,20 @@ void RveParameters::declare_parameters(dealii::ParameterHandler& prm)
   prm.declare_entry("Packing", "../packings/lbs_ref", Anything(),
                     "RVE packing prefix: PREFIX.rve.data and PREFIX.vars made by "
                     "rve_templates/build_frame.py.");
-  prm.declare_entry("Friction", "0.4", Double(0.0), "Coulomb friction coefficient mu.");
-  prm.declare_entry("Normal stiffness", "1e7", Double(0.0), "Contact stiffness k_n [N/m], > 0.");
-  prm.declare_entry("Tangential stiffness", "2e6", Double(0.0),
-                    "Contact stiffness k_s [N/m], > 0.");
-  prm.declare_entry("Time step", "1e-6", Double(0.0),
-                    "DEM time step [s], > 0 and below the critical step.");
+  // The entries in which the 2D and 3D templates differ default to the
+  // template's own value, so that each template states its defaults once.
+  prm.declare_entry("Friction", "template", Anything(),
+                    "Coulomb friction coefficient mu, >= 0, or 'template' for the template's "
+                    "own value (variable mu: 0.4 in rve_setup_2d, 0.5 in rve_setup_3d).");
+  prm.declare_entry("Normal stiffness", "template", Anything(),
+                    "Contact stiffness k_n [N/m], > 0, or 'template' (variable kn: 1e7 in 2D, "
+                    "1e5 in 3D). Not used by the 3D template's Hertz contacts.");
+  prm.declare_entry("Tangential stiffness", "template", Anything(),
+                    "Contact stiffness k_s [N/m], > 0, or 'template' (variable kt: 2e6 in 2D, "
+                    "2.5e4 in 3D).");
+  prm.declare_entry("Time step", "template", Anything(),
+                    "DEM time step [s], > 0 and below the critical step, or 'template' "
+                    "(variable dt: 1e-6 in 2D, 8e-7 in 3D).");
   prm.declare_entry("Local damping force", "0.7", Double(0.0, 0.999),
                     "Cundall local damping alpha of forces (R11).");
   prm.declare_entry("Local damping moment", "0.7", Double(0.0, 0.999),
@@ -82,8 +185,9 @@ void RveParameters::declare_parameters(dealii::ParameterHandler& prm)
   prm.declare_entry("Relaxation tolerance", "1e-3", Double(0.0),
                     "Tolerance of the relaxation criterion, > 0.");
   prm.declare_entry("Servo tolerance", "1e-4", Double(0.0), "Servo residual r_a (R14), > 0.");
-  prm.declare_entry("Servo residual scale", "inertia", Selection("inertia|contact"),
-                    "Scale of the servo residual: inertia = (R14), each pair's force and moment "
+  prm.declare_entry("Servo residual scale", "template", Selection("template|inertia|contact"),
+                    "Scale of the servo residual ('template': the template's variable "
+                    "servo_scale, inertia in 2D, contact in 3D): inertia = (R14), each pair's force and moment "
                     "imbalance over M R/dt^2 and M R^2/dt^2 ([LBS]; about 4e4 N for its discs, "
                     "whatever the pressure); contact = their root mean square over the pairs, "
                     "over the rms contact force (moments over it times R): the tolerance is then "
@@ -132,10 +236,10 @@ void RveParameters::parse_parameters(dealii::ParameterHandler& prm, const std::s
   prm.enter_subsection("RVE");
   template_file = resolve_path(base_dir, prm.get("Template"));
   packing = resolve_path(base_dir, prm.get("Packing"));
-  friction = prm.get_double("Friction");
-  kn = prm.get_double("Normal stiffness");
-  kt = prm.get_double("Tangential stiffness");
-  time_step = prm.get_double("Time step");
+  const std::map<std::string, std::string> given = {
+    {"mu", prm.get("Friction")}, {"kn", prm.get("Normal stiffness")},
+    {"kt", prm.get("Tangential stiffness")}, {"dt", prm.get("Time step")},
+    {"servo_scale", prm.get("Servo residual scale")}};
   damping_force = prm.get_double("Local damping force");
   damping_moment = prm.get_double("Local damping moment");
   rotation = prm.get("Rotation");
@@ -143,7 +247,6 @@ void RveParameters::parse_parameters(dealii::ParameterHandler& prm, const std::s
   relaxation_criterion = prm.get("Relaxation criterion");
   relaxation_tolerance = prm.get_double("Relaxation tolerance");
   servo_tolerance = prm.get_double("Servo tolerance");
-  servo_scale = prm.get("Servo residual scale");
   inner_start = prm.get("Inner start");
   gain_a = prm.get_double("Force gain");
   gain_m = prm.get_double("Moment gain");
@@ -157,8 +260,8 @@ void RveParameters::parse_parameters(dealii::ParameterHandler& prm, const std::s
   const std::string extra = prm.get("Template variables");
   prm.leave_subsection();
   template_variables = parse_template_variables(extra);
-  require_positive("RVE", {{"Normal stiffness", kn}, {"Tangential stiffness", kt},
-                           {"Time step", time_step}, {"Relaxation tolerance", relaxation_tolerance},
+  take_template_defaults(given);
+  require_positive("RVE", {{"Relaxation tolerance", relaxation_tolerance},
                            {"Servo tolerance", servo_tolerance}, {"Force gain", gain_a},
                            {"Moment gain", gain_m}, {"Max overlap", max_overlap},
                            {"Solve strain rate", solve_strain_rate}});
@@ -173,7 +276,7 @@ std::map<std::string, std::string> RveParameters::parse_template_variables(const
   std::map<std::string, std::string> out;
   std::stringstream items(text);
   std::string item;
-  const RveSetup entries = setup("none"); // the variables the entries above set
+  const auto entries = entry_variables(); // the variables the entries above set
   while (std::getline(items, item, ','))
   {
     std::istringstream words(item);
@@ -187,7 +290,7 @@ std::map<std::string, std::string> RveParameters::parse_template_variables(const
     if (!name_ok || !(words >> value) || (words >> extra))
       throw std::runtime_error("subsection RVE: 'Template variables': '" + item +
                                "' is not a pair 'name value' (pairs separated by commas)");
-    if (entries.variables.count(name) || name == "rve_data" || name == "rve_vars")
+    if (entries.count(name) || name == "rve_data" || name == "rve_vars")
       throw std::runtime_error("subsection RVE: 'Template variables' sets '" + name +
                                "', which an entry of subsection RVE sets; use that entry");
     out[name] = value;
@@ -208,29 +311,38 @@ void RveParameters::check_files(const std::string& prm_file) const
                                "at spaces; use a path without spaces (e.g. a symbolic link)");
 }
 
+std::map<std::string, std::string> RveParameters::entry_variables() const
+{
+  return {{"kn", number(kn)},
+          {"kt", number(kt)},
+          {"mu", number(friction)},
+          {"dt", number(time_step)},
+          {"alpha", number(damping_force)},
+          {"beta", number(damping_moment)},
+          {"rotation", rotation},
+          {"gain_a", number(gain_a)},
+          {"gain_m", number(gain_m)},
+          {"relax", relaxation_criterion},
+          {"relax_tol", number(relaxation_tolerance)},
+          {"servo_tol", number(servo_tolerance)},
+          {"servo_scale", servo_scale},
+          {"check_every", std::to_string(check_interval)},
+          {"max_steps", std::to_string(step_budget)},
+          {"start", start},
+          {"inner_start", inner_start},
+          {"membrane", membrane},
+          {"max_overlap", number(max_overlap)}};
+}
+
 RveSetup RveParameters::setup(const std::string& log_file) const
 {
+  if (servo_scale == "template")
+    throw std::logic_error("RveParameters::setup(): the template defaults were not read (no template "
+                           "file at parse time; check_files() reports it)");
   RveSetup s = packing_setup(template_file, packing);
   s.log_file = log_file;
-  s.variables.insert({{"kn", number(kn)},
-                 {"kt", number(kt)},
-                 {"mu", number(friction)},
-                 {"dt", number(time_step)},
-                 {"alpha", number(damping_force)},
-                 {"beta", number(damping_moment)},
-                 {"rotation", rotation},
-                 {"gain_a", number(gain_a)},
-                 {"gain_m", number(gain_m)},
-                 {"relax", relaxation_criterion},
-                 {"relax_tol", number(relaxation_tolerance)},
-                 {"servo_tol", number(servo_tolerance)},
-                 {"servo_scale", servo_scale},
-                 {"check_every", std::to_string(check_interval)},
-                 {"max_steps", std::to_string(step_budget)},
-                 {"start", start},
-                 {"inner_start", inner_start},
-                 {"membrane", membrane},
-                 {"max_overlap", number(max_overlap)}});
+  const auto entries = entry_variables();
+  s.variables.insert(entries.begin(), entries.end());
   s.variables.insert(template_variables.begin(), template_variables.end());
   s.solve_drive = solve_drive == "continuous" ? SolveDrive::continuous : SolveDrive::servo_iterations;
   s.solve_strain_rate = solve_strain_rate;

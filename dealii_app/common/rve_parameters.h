@@ -32,6 +32,9 @@ void require_positive(const std::string& subsection,
 /// subsection RVE: the packing, the contact law and the servo settings.
 struct RveParameters
 {
+  // Friction, Normal/Tangential stiffness, Time step and Servo residual
+  // scale default to 'template': the values of the template's own
+  // `variable ... index` lines (the 2D and 3D templates differ in them).
   std::string template_file;
   std::string packing;
   double friction, kn, kt, time_step, damping_force, damping_moment;
@@ -56,5 +59,16 @@ struct RveParameters
   std::map<std::string, std::string> parse_template_variables(const std::string& text) const;
   /// @throws std::runtime_error naming @p prm_file and the entry if Template or Packing files are missing.
   void check_files(const std::string& prm_file) const;
+
+private:
+  /// Template variable -> value of every entry above that sets one.
+  std::map<std::string, std::string> entry_variables() const;
+  /// friction, kn, kt, time_step, servo_scale from @p given (template variable ->
+  /// entry text); 'template' takes the template's `variable NAME index VALUE`.
+  /// If a value is 'template' and the template file does not exist, the values
+  /// stay unset (NaN, servo_scale 'template'; setup() refuses) and check_files()
+  /// reports the file.
+  /// @throws std::runtime_error naming the entry, or the template's line, and the value.
+  void take_template_defaults(const std::map<std::string, std::string>& given);
 };
 } // namespace fe2dem

@@ -153,7 +153,7 @@ double determinant(const std::vector<double>& F, unsigned int dim)
 {
   fe2dem::Mat3 A{};
   std::copy(F.begin(), F.end(), A.begin());
-  return dim == 2 ? fe2dem::det(fe2dem::Mat2{A[0], A[1], A[2], A[3]}) : fe2dem::det(A);
+  return dim == 2 ? fe2dem::det(fe2dem::Mat2{{A[0], A[1], A[2], A[3]}}) : fe2dem::det(A);
 }
 
 /// Every row of the table @p file ('#' comments, blank lines skipped), checked before any RVE exists.

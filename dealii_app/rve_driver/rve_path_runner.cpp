@@ -52,7 +52,7 @@ std::vector<int> operator+(std::vector<int> a, const std::vector<int>& b)
 template <int dim>
 RvePathRunner<dim>::RvePathRunner(const Parameters& parameters)
   : axial(dim == 2 ? 3 : parameters.path.axial_y ? 4 : 8),
-    lateral(parameters.path.axial_y ? std::array<int, 2>{0, 8} : std::array<int, 2>{0, 4}),
+    lateral(parameters.path.axial_y ? std::array<int, 2>{{0, 8}} : std::array<int, 2>{{0, 4}}),
     prm_(parameters), rve_(checked(parameters.rve.setup("none")))
 {
   // A first guess of the stiffness d sigma / d F; the secant iteration

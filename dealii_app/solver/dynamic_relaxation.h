@@ -6,7 +6,7 @@
  * of the mesh, and the kinetic-energy criterion (M9). omega is the secant
  * estimate (M6) or, with 'Frequency estimate = incremental', the Rayleigh
  * quotient of the last iteration's change. The load-step driver
- * (ExplicitSolver::relax_load_step) calls advance() until converged(); an
+ * (DynamicRelaxationAnalysis::solve_step) calls advance() until converged(); an
  * explicit-dynamics integrator can stand beside it with the same shape.
  */
 #pragma once

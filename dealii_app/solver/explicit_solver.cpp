@@ -3,7 +3,6 @@
 
 #include "checkpoint_file.h"
 #include "corotational_material.h"
-#include "elastic_extension.h"
 #include "neo_hookean.h"
 #include "rve_material.h"
 #include "prepared_rve.h"
@@ -274,8 +273,8 @@ void ExplicitSolver<dim>::setup_system()
   dof_handler_.distribute_dofs(fe_);
   const unsigned int n = dof_handler_.n_dofs();
   dof_map_.reinit(dof_handler_);
-  for (auto* v : {&mass_, &displacement_, &velocity_, &f_int_, &f_ext_, &f_hourglass_, &acceleration_,
-                  &f_int_previous_, &step_increment_})
+  for (auto* v : {&fields_.mass, &fields_.displacement, &fields_.velocity, &fields_.acceleration,
+                  &fields_.f_int, &fields_.f_ext, &fields_.f_hourglass, &step_increment_})
     v->reinit(n);
   ip_.resize(triangulation_.n_active_cells() * quadrature_.size());
   FEValues<dim> fe_values(fe_, quadrature_, update_quadrature_points);
@@ -296,7 +295,7 @@ void ExplicitSolver<dim>::assemble_lumped_mass()
 {
   const QGauss<dim> quadrature(2);
   FEValues<dim> fe_values(fe_, quadrature, update_values | update_JxW_values);
-  const double density = prm_.material.density * (prm_.dynamics.dynamic ? prm_.dynamics.mass_scaling : 1.0);
+  const double density = prm_.material.density * prm_.dynamics.mass_factor();
   std::vector<types::global_dof_index> dofs(fe_.dofs_per_cell);
   for (const auto& cell : dof_handler_.active_cell_iterators())
   {
@@ -317,7 +316,7 @@ void ExplicitSolver<dim>::assemble_lumped_mass()
       for (unsigned int j = 0; j < fe_.dofs_per_cell; ++j)
         if (fe_.system_to_component_index(j).first == c)
           sum += nn[j];
-      mass_[dofs[i]] += nn[i] / sum * density * volume;
+      fields_.mass[dofs[i]] += nn[i] / sum * density * volume;
     }
   }
 }
@@ -334,14 +333,14 @@ void ExplicitSolver<dim>::update_stresses()
   {
     if (one_point_)
     {
-      cell->get_dof_values(displacement_, u_cell);
+      cell->get_dof_values(fields_.displacement, u_cell);
       grad_u[0] = one_point_->deformation_gradient(cell->active_cell_index(), u_cell) -
                   unit_symmetric_tensor<dim>();
     }
     else
     {
       fe_values_F_.reinit(cell);
-      fe_values_F_[u].get_function_gradients(displacement_, grad_u);
+      fe_values_F_[u].get_function_gradients(fields_.displacement, grad_u);
     }
     for (unsigned int q = 0; q < quadrature_.size(); ++q, ++point)
     {
@@ -370,7 +369,7 @@ void ExplicitSolver<dim>::assemble_forces_from_stresses()
   TimerOutput::Scope t(timer_, "assemble f_int");
   const FEValuesExtractors::Vector u(0);
   std::vector<types::global_dof_index> dofs(fe_.dofs_per_cell);
-  f_int_ = 0.0;
+  fields_.f_int = 0.0;
   if (one_point_)
   {
     assemble_one_point_force();
@@ -383,7 +382,7 @@ void ExplicitSolver<dim>::assemble_forces_from_stresses()
     cell->get_dof_indices(dofs);
     for (unsigned int q = 0; q < quadrature_.size(); ++q, ++point)
       for (unsigned int i = 0; i < fe_.dofs_per_cell; ++i)
-        f_int_[dofs[i]] +=
+        fields_.f_int[dofs[i]] +=
           scalar_product(ip_[point].P, fe_values_f_int_[u].gradient(i, q)) * fe_values_f_int_.JxW(q);
   }
 }
@@ -395,94 +394,20 @@ void ExplicitSolver<dim>::assemble_one_point_force()
   std::vector<types::global_dof_index> dofs(fe_.dofs_per_cell);
   Vector<double> u_cell(fe_.dofs_per_cell), v_cell(fe_.dofs_per_cell), f_stress(fe_.dofs_per_cell),
     f_hourglass(fe_.dofs_per_cell);
-  f_hourglass_ = 0.0;
+  fields_.f_hourglass = 0.0;
   for (const auto& cell : dof_handler_.active_cell_iterators())
   {
     const unsigned int c = cell->active_cell_index();
     cell->get_dof_indices(dofs);
-    cell->get_dof_values(displacement_, u_cell);
-    cell->get_dof_values(velocity_, v_cell);
+    cell->get_dof_values(fields_.displacement, u_cell);
+    cell->get_dof_values(fields_.velocity, v_cell);
     one_point_->internal_force(c, ip_[c].P, u_cell, v_cell, f_stress, f_hourglass);
     for (unsigned int i = 0; i < fe_.dofs_per_cell; ++i)
     {
-      f_int_[dofs[i]] += f_stress[i] + f_hourglass[i];
-      f_hourglass_[dofs[i]] += f_hourglass[i];
+      fields_.f_int[dofs[i]] += f_stress[i] + f_hourglass[i];
+      fields_.f_hourglass[dofs[i]] += f_hourglass[i];
     }
   }
-}
-
-// One load step of dynamic relaxation (dynamic_relaxation.h) with the
-// multiple-time-stepping policy: bounded RVE solves until (M9) first holds,
-// then full ones until it holds again, so that a step ends on relaxed RVEs.
-// Too few DEM steps per iteration let the RVE stresses lag the macro motion
-// so much that (M9) is never reached (2x4 with 10 steps: benchmarks/perf);
-// after max_bounded iterations the step continues with full solves.
-// With 'Ramp iterations' = N > 0 the step's load (prescribed displacements
-// and external forces) grows linearly over its first N iterations, and (M9)
-// is tested only once it is complete.
-template <int dim>
-unsigned int ExplicitSolver<dim>::relax_load_step(const double fraction_begin)
-{
-  const DynamicRelaxation& dr = prm_.relaxation;
-  const unsigned int ramp = dr.ramp_iterations;
-  const double fraction_end = load_fraction_;
-  const auto fraction_at = [&](unsigned int it) {
-    return it >= ramp ? fraction_end : fraction_begin + (fraction_end - fraction_begin) * it / ramp;
-  };
-  velocity_ = 0.0;
-  // The first step of a stage has no increment of its kind (stage 1's is isotropic).
-  if (dr.predictor == DynamicRelaxation::Predictor::extrapolate && step_in_stage_ > 1)
-    displacement_.add((fraction_end - fraction_begin) * load_case_->steps_in_stage(stage_), step_increment_);
-  else if (dr.boundary_extension == DynamicRelaxation::BoundaryExtension::elastic)
-    extend_boundary_increment(fraction_end);
-  apply_boundary_values(fraction_at(1));
-  integrator_->start();
-  const unsigned int max_bounded = 1000;
-  bool bounded = material_->has_step_limit() && prm_.material.steps_per_iteration > 0;
-  if (material_->has_step_limit())
-    material_->set_step_limit(bounded ? prm_.material.steps_per_iteration : 0);
-  for (unsigned int it = 1; it <= dr.max_iterations; ++it)
-  {
-    if (const int signal = stop_signal_received())
-      throw StopSignal{signal};
-    if (it > 1 && it <= ramp)
-      apply_boundary_values(fraction_at(it));
-    assemble_internal_force();
-    load_case_->external_force(stage_, fraction_at(it), dof_handler_, displacement_, f_ext_);
-    const double e_kin = integrator_->advance(displacement_, velocity_, f_int_, f_ext_, boundary_values_);
-    const bool relaxed = it >= ramp && integrator_->converged(it, e_kin);
-    if (bounded && (relaxed || it >= max_bounded))
-    {
-      bounded = false;
-      material_->set_step_limit(0);
-    }
-    else if (relaxed)
-    {
-      // P at the converged displacement. (With committed RVE history this is
-      // one more trial solve from the committed state, at the final U.)
-      assemble_internal_force();
-      return it;
-    }
-  }
-  throw std::runtime_error("load step " + std::to_string(step_) + ": dynamic relaxation did not "
-                           "converge within 'Max iterations' = " + std::to_string(dr.max_iterations));
-}
-
-// 'Boundary extension = elastic': the free dofs move by the elastic extension
-// of the step's prescribed increment (elastic_extension.h).
-template <int dim>
-void ExplicitSolver<dim>::extend_boundary_increment(const double fraction_end)
-{
-  auto increment = load_case_->constraints(stage_, fraction_end);
-  for (auto& [i, value] : increment)
-    value -= displacement_[i];
-  // Made at each use (once per stage with the predictor, every step without)
-  // rather than kept: its matrix would outweigh the rest of the replicated
-  // macro state on a large 3D mesh.
-  const ElasticExtension<dim> extension(dof_handler_, prm_.relaxation.extension_poisson_ratio);
-  Vector<double> du;
-  extension.extend(increment, du);
-  displacement_ += du;
 }
 
 template class ExplicitSolver<2>;

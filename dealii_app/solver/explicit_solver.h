@@ -1,22 +1,24 @@
 /**
  * @file explicit_solver.h
- * The macro solver of `fe2dem`: total Lagrangian, Q1 elements with 2x2
- * (3D: 2x2x2) Gauss points or one point and hourglass control
- * (one_point_elements.h), lumped mass (M5) and dynamic relaxation
- * (M3)-(M9) per load step, in the style of the deal.II tutorials (step-18,
- * step-44). Instantiated for dim = 2 (plane strain) and 3.
+ * The macro solver of `fe2dem`: total Lagrangian (or corotational), Q1
+ * elements with 2x2 (3D: 2x2x2) Gauss points or one point and hourglass
+ * control (one_point_elements.h), lumped mass (M5), in the style of the
+ * deal.II tutorials (step-18, step-44). Instantiated for dim = 2 (plane
+ * strain) and 3.
  *
  * Its seams: the constitutive response comes from a Material (material.h:
  * the built-in neo-Hookean law or one RVE per quadrature point), the
- * boundary from a LoadCase (load_case.h) and each iteration from the
- * integrator (dynamic_relaxation.h). Under MPI every rank runs the same
- * (small) macro problem and the RVE material spreads the RVEs over the
- * ranks, so results do not depend on the number of ranks; output on rank 0.
+ * boundary from a LoadCase (load_case.h), and how a load step is solved
+ * from an Analysis (analysis.h: dynamic relaxation or explicit dynamics),
+ * which sees the mesh through the MacroSystem this class implements. The
+ * solver itself runs the load steps: sub-steps after RVE faults, output,
+ * checkpoints. Under MPI every rank runs the same (small) macro problem and
+ * the RVE material spreads the RVEs over the ranks, so results do not
+ * depend on the number of ranks; output on rank 0.
  */
 #pragma once
 
-#include "central_difference.h"
-#include "dynamic_relaxation.h"
+#include "analysis.h"
 #include "energy_balance.h"
 #include "history_writer.h"
 #include "ip_state.h"
@@ -44,7 +46,7 @@
 namespace fe2dem::macro
 {
 template <int dim>
-class ExplicitSolver
+class ExplicitSolver : private MacroSystem<dim>
 {
 public:
   /// @param resume continue from the newest checkpoint in the output directory.
@@ -60,6 +62,7 @@ public:
   static void install_signal_handlers();
 
 private:
+  using Constraints = MacroFields::Constraints;
   /// Everything of the macro state that a converged load step leaves behind.
   struct ConvergedState
   {
@@ -68,10 +71,8 @@ private:
     dealii::Vector<double> displacement;
     dealii::Vector<double> step_increment; ///< of the last load step (Predictor = extrapolate)
     std::vector<IpState<dim>> ip;
-    // explicit dynamics: the rest of the state of the integrator
-    dealii::Vector<double> velocity, acceleration, f_int;
-    double time = 0.0;
-    std::vector<double> energy; ///< EnergyBalance::pack()
+    std::vector<double> analysis; ///< Analysis::pack_state()
+    std::vector<double> energy;   ///< EnergyBalance::pack()
   };
 
   void make_grid();
@@ -85,33 +86,30 @@ private:
   void make_material(const std::string& checkpoint);
   /// The neo-Hookean law or the RVEs, before the corotational wrapper.
   void make_constitutive_material(const std::string& checkpoint);
-  /// Prescribed displacements of the load fraction @p fraction, at rest.
-  void apply_boundary_values(double fraction);
   void update_stresses();
+
+  // --- MacroSystem: what the analysis (analysis.h) asks of the mesh ---------
+  MacroFields& fields() override { return fields_; }
+  const MacroFields& fields() const override { return fields_; }
   /// update_stresses(), then assemble_forces_from_stresses().
-  void assemble_internal_force();
+  void assemble_internal_force() override;
   /// f_int (and f_hourglass) from the current P of the IPs, u and v.
-  void assemble_forces_from_stresses();
+  void assemble_forces_from_stresses() override;
+  void assemble_external_force(double fraction) override;
+  Constraints constraints(double fraction) const override;
+  void record_energy(double kinetic) override;
+  void commit_corotational() override;
+  void stop_if_signalled() const override;
+  Material<dim>& material() override { return *material_; }
+  const dealii::DoFHandler<dim>& dof_handler() const override { return dof_handler_; }
+  LoadStepIndex load_step() const override;
+  const dealii::Vector<double>& last_step_increment() const override { return step_increment_; }
+
   void assemble_one_point_force();
   void make_one_point_elements();
   /// One load step, cut into halves and retried after RVE failures (subsection Faults).
   unsigned int solve_load_step();
 
-  // --- explicit dynamics (explicit_solver_dynamics.cpp) ---------------------
-  void make_central_difference();
-  /// The state at t = 0: prescribed u and v, rest elsewhere, a from the forces.
-  void start_dynamics();
-  /// One output interval in time steps; returns their number.
-  unsigned int integrate_load_step();
-  /// Velocity and acceleration of the prescribed dofs at time @p t (differences over @p dt),
-  /// given their displacements @p now at @p t.
-  std::pair<CentralDifferenceIntegrator::Values, CentralDifferenceIntegrator::Values>
-  prescribed_motion(double t, double dt, const CentralDifferenceIntegrator::Values& now) const;
-
-  /// @param fraction_begin the load fraction the step starts from (the ramp's start).
-  unsigned int relax_load_step(double fraction_begin);
-  /// Moves the free dofs by the elastic extension of the prescribed increment up to @p fraction_end.
-  void extend_boundary_increment(double fraction_end);
   void inject_fault_if_due(bool first_attempt);
   void finish_isotropic_stage();
   /// The step's F becomes every IP's F_last_step (after its output).
@@ -138,8 +136,6 @@ private:
   void write_vtu(const StepStatistics& stats);
   /// External forces with the reactions of the constrained dofs (energy_balance.h).
   dealii::Vector<double> external_with_reactions() const;
-  /// Quasi-static: adds the converged load step to the energy balance.
-  void record_energy();
   void write_energy_row();
   /// The material's stored energy over the mesh, sum of W(F) dV (NaN for RVEs).
   double strain_energy() const;
@@ -188,18 +184,12 @@ private:
   std::unique_ptr<LoadCase<dim>> load_case_;
   std::unique_ptr<Material<dim>> material_;
   std::unique_ptr<OnePointElements<dim>> one_point_; ///< 'Quadrature' = one point only
-  std::unique_ptr<DynamicRelaxationIntegrator> integrator_;     ///< quasi-static
-  std::unique_ptr<CentralDifferenceIntegrator> central_difference_; ///< dynamic
-  dealii::Vector<double> acceleration_, f_int_previous_;           ///< dynamic
-  double time_ = 0.0; ///< dynamic: the physical time of the state
-  /// dynamic with RVEs: DEM steps per macro step and that step (0: no RVEs)
-  long dem_steps_per_macro_step_ = 0;
-  double macro_time_step_ = 0.0;
+  std::unique_ptr<Analysis<dim>> analysis_;
+  /// The analysis's state read by --resume, until the analysis exists.
+  std::vector<double> resumed_analysis_state_;
   std::unique_ptr<HistoryWriter> history_file_;
   std::unique_ptr<OutputLock> output_lock_; ///< rank 0: this run owns the output directory
-  std::map<dealii::types::global_dof_index, double> boundary_values_;
-  dealii::Vector<double> mass_, displacement_, velocity_, f_int_, f_ext_;
-  dealii::Vector<double> f_hourglass_; ///< the hourglass part of f_int_ (one point)
+  MacroFields fields_;
   /// displacement change over the last converged load step (its sub-steps together)
   dealii::Vector<double> step_increment_;
   std::vector<IpState<dim>> ip_; ///< cell by cell, quadrature_.size() per cell

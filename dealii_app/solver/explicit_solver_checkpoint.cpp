@@ -89,8 +89,8 @@ int ExplicitSolver<dim>::stop_signal_received() const
 template <int dim>
 void ExplicitSolver<dim>::save_converged_state()
 {
-  converged_ = {stage_,    step_in_stage_, step_,  load_case_->reference(), displacement_, step_increment_,
-                ip_,       velocity_,      acceleration_, f_int_,                time_,         energy_.pack()};
+  converged_ = {stage_, step_in_stage_, step_, load_case_->reference(), fields_.displacement, step_increment_,
+                ip_,    analysis_->pack_state(), energy_.pack()};
 }
 
 template <int dim>
@@ -120,12 +120,7 @@ std::string ExplicitSolver<dim>::write_checkpoint()
       d.summary_rows = summary_rows_;
       d.energy_rows = energy_rows_;
       d.energy_state = converged_.energy;
-      if (prm_.dynamics.dynamic)
-      {
-        d.dynamics_state = {converged_.time};
-        for (const Vector<double>* v : {&converged_.velocity, &converged_.acceleration, &converged_.f_int})
-          d.dynamics_state.insert(d.dynamics_state.end(), v->begin(), v->end());
-      }
+      d.dynamics_state = converged_.analysis;
       d.parameters = prm_.identity;
       macro::write_checkpoint(file, d, states, history_file_.get());
       prune_checkpoints(checkpoint_directory_, prm_.checkpoint.keep);
@@ -180,10 +175,10 @@ std::string ExplicitSolver<dim>::resume_from_checkpoint()
                              prm_.file + "':" + differences(d.parameters, prm_.identity) +
                              "\nResume with the parameter file of that run, or start a new run "
                              "with another 'Output directory'");
-  if (d.displacement.size() != displacement_.size())
+  if (d.displacement.size() != fields_.displacement.size())
     throw std::runtime_error("--resume: checkpoint '" + file + "' holds " +
                              std::to_string(d.displacement.size()) + " degrees of freedom, the mesh has " +
-                             std::to_string(displacement_.size()) + " (was the mesh file changed?)");
+                             std::to_string(fields_.displacement.size()) + " (was the mesh file changed?)");
   stage_ = d.stage;
   step_in_stage_ = d.step_in_stage;
   step_ = d.step;
@@ -194,23 +189,14 @@ std::string ExplicitSolver<dim>::resume_from_checkpoint()
                              " values, the mesh has " + std::to_string(ip_.size()) + " of " +
                              std::to_string(IpState<dim>::packed_size()));
   load_case_->set_reference({d.u_top_ic, d.h_ic});
-  std::copy(d.displacement.begin(), d.displacement.end(), displacement_.begin());
+  std::copy(d.displacement.begin(), d.displacement.end(), fields_.displacement.begin());
   std::copy(d.step_increment.begin(), d.step_increment.end(), step_increment_.begin());
   for (std::size_t p = 0; p < ip_.size(); ++p)
     ip_[p].unpack(&d.ip_state[p * d.ip_state_width]);
   summary_rows_ = d.summary_rows;
   energy_rows_ = d.energy_rows;
   energy_.unpack(d.energy_state);
-  if (prm_.dynamics.dynamic)
-  {
-    const std::size_t n = displacement_.size();
-    if (d.dynamics_state.size() != 1 + 3 * n)
-      throw std::runtime_error("--resume: checkpoint '" + file + "' holds no state of explicit dynamics");
-    time_ = d.dynamics_state[0];
-    for (std::size_t i = 0; i < n; ++i)
-      velocity_[i] = d.dynamics_state[1 + i], acceleration_[i] = d.dynamics_state[1 + n + i],
-      f_int_[i] = d.dynamics_state[1 + 2 * n + i];
-  }
+  resumed_analysis_state_ = d.dynamics_state; // for the analysis, made after the material
   t_start_ = MPI_Wtime() - d.wall_seconds;
   for (unsigned int s = 1; s <= step_; ++s)
     pvd_records_.emplace_back(s, vtu_name(s));

@@ -29,24 +29,15 @@ void ExplicitSolver<dim>::run()
   const std::string checkpoint = resume_ ? resume_from_checkpoint() : "";
   make_material(checkpoint);
   make_one_point_elements();
-  if (prm_.dynamics.dynamic)
-    make_central_difference();
-  else
-    integrator_ = std::make_unique<DynamicRelaxationIntegrator>(prm_.relaxation, mass_, relaxation_frequency());
+  analysis_ = make_analysis<dim>(*this, prm_, highest_frequency(), relaxation_frequency(), pcout_);
   if (checkpoint.empty())
   {
-    if (prm_.dynamics.dynamic)
-      start_dynamics();
-    else
-    {
-      assemble_forces_from_stresses(); // the initial stress (RVEs: the packing's) does work from the start
-      boundary_values_ = load_case_->constraints(stage_, 0.0);
-    }
-    energy_.start(displacement_, f_int_, external_with_reactions(), f_hourglass_);
+    analysis_->start();
+    energy_.start(fields_.displacement, fields_.f_int, external_with_reactions(), fields_.f_hourglass);
   }
-  // RVEs relax quasi-statically under the initial F (start_dynamics), then advance in time.
-  if (dem_steps_per_macro_step_ > 0)
-    material_->set_timed_steps(dem_steps_per_macro_step_);
+  else
+    analysis_->unpack_state(resumed_analysis_state_, checkpoint);
+  analysis_->prepare_material();
   open_output_files(checkpoint);
   save_converged_state();
   try
@@ -61,8 +52,7 @@ void ExplicitSolver<dim>::run()
         {
           TimerOutput::Scope t(timer_, "output");
           output_step(iterations);
-          if (!prm_.dynamics.dynamic)
-            record_energy();
+          analysis_->finish_step(load_fraction_);
           write_energy_row();
         }
         close_load_step();
@@ -104,7 +94,7 @@ unsigned int ExplicitSolver<dim>::solve_load_step()
   double done = 0.0, size = 1.0;
   unsigned int iterations = 0, cuts = 0;
   bool first_attempt = true;
-  const Vector<double> start = displacement_;
+  const Vector<double> start = fields_.displacement;
   while (done < 1.0)
   {
     const double fraction_begin = (static_cast<double>(step_in_stage_ - 1) + done) / n;
@@ -113,19 +103,20 @@ unsigned int ExplicitSolver<dim>::solve_load_step()
     {
       inject_fault_if_due(first_attempt);
       first_attempt = false;
-      iterations += prm_.dynamics.dynamic ? integrate_load_step() : relax_load_step(fraction_begin);
+      const auto result = analysis_->solve_step(fraction_begin, load_fraction_);
+      iterations += result.iterations;
+      load_fraction_ = result.fraction;
       done += size;
     }
     catch (const CouplerError& e)
     {
-      // In dynamics a cut would repeat the same time steps (the step is fixed).
-      if (!prm_.faults.cut_step || cuts == prm_.faults.max_cuts || prm_.dynamics.dynamic)
+      const std::string no_cuts = analysis_->why_steps_are_not_cut();
+      if (!prm_.faults.cut_step || cuts == prm_.faults.max_cuts || !no_cuts.empty())
       {
         const std::string file = write_checkpoint();
         throw CouplerError(
           e.ip_id, std::string(e.what()) + "\n" +
-                     (prm_.dynamics.dynamic ? std::string("In dynamics a load step is not cut (its "
-                                                          "time steps would repeat)")
+                     (!no_cuts.empty()       ? no_cuts
                       : prm_.faults.cut_step ? "The load step was cut " + std::to_string(cuts) +
                                                  " times ('Max step cuts') without success"
                                              : std::string("'On RVE failure' = stop")) +
@@ -140,18 +131,11 @@ unsigned int ExplicitSolver<dim>::solve_load_step()
              << ": every RVE back to the start of the load step, retrying it in "
              << std::lround(1.0 / size) << " sub-steps" << std::endl;
       material_->rollback();
-      displacement_ = start;
-      if (prm_.dynamics.dynamic)
-      {
-        velocity_ = converged_.velocity, acceleration_ = converged_.acceleration, f_int_ = converged_.f_int;
-        time_ = converged_.time;
-        ip_ = converged_.ip; // their corotational state is committed every time step
-        energy_.unpack(converged_.energy);
-      }
+      fields_.displacement = start;
     }
   }
   material_->commit();
-  step_increment_ = displacement_;
+  step_increment_ = fields_.displacement;
   step_increment_ -= start;
   return iterations;
 }
@@ -182,7 +166,7 @@ unsigned int ExplicitSolver<dim>::total_steps() const
 template <int dim>
 void ExplicitSolver<dim>::finish_isotropic_stage()
 {
-  load_case_->finish_stage_1(displacement_);
+  load_case_->finish_stage_1(fields_.displacement);
   for (IpState<dim>& p : ip_)
     p.J_ic = determinant(p.F);
 }
@@ -223,8 +207,8 @@ double ExplicitSolver<dim>::relaxation_frequency() const
 template <int dim>
 double ExplicitSolver<dim>::load_time() const
 {
-  if (prm_.dynamics.dynamic)
-    return time_;
+  if (const auto t = analysis_->time())
+    return *t;
   if (prm_.loading.boundary == Loading::Boundary::conditions)
     return load_fraction_ * prm_.loading.end_time;
   return (stage_ == 1 ? 0.0 : load_case_->steps_in_stage(1) > 0 ? 1.0 : 0.0) + load_fraction_;
@@ -234,17 +218,16 @@ double ExplicitSolver<dim>::load_time() const
 template <int dim>
 Vector<double> ExplicitSolver<dim>::external_with_reactions() const
 {
-  Vector<double> g = f_ext_;
-  for (const auto& entry : boundary_values_)
-    g[entry.first] = f_int_[entry.first] + mass_[entry.first] * acceleration_[entry.first];
+  Vector<double> g = fields_.f_ext;
+  for (const auto& entry : fields_.boundary_values)
+    g[entry.first] = fields_.f_int[entry.first] + fields_.mass[entry.first] * fields_.acceleration[entry.first];
   return g;
 }
 
 template <int dim>
-void ExplicitSolver<dim>::record_energy()
+void ExplicitSolver<dim>::record_energy(const double kinetic)
 {
-  load_case_->external_force(stage_, load_fraction_, dof_handler_, displacement_, f_ext_);
-  energy_.record(displacement_, f_int_, external_with_reactions(), f_hourglass_, 0.0);
+  energy_.record(fields_.displacement, fields_.f_int, external_with_reactions(), fields_.f_hourglass, kinetic);
 }
 
 template <int dim>
@@ -277,14 +260,36 @@ double ExplicitSolver<dim>::strain_energy() const
 }
 
 template <int dim>
-void ExplicitSolver<dim>::apply_boundary_values(const double fraction)
+void ExplicitSolver<dim>::assemble_external_force(const double fraction)
 {
-  boundary_values_ = load_case_->constraints(stage_, fraction);
-  for (const auto& [i, value] : boundary_values_)
-  {
-    displacement_[i] = value;
-    velocity_[i] = 0.0;
-  }
+  load_case_->external_force(stage_, fraction, dof_handler_, fields_.displacement, fields_.f_ext);
+}
+
+template <int dim>
+typename ExplicitSolver<dim>::Constraints ExplicitSolver<dim>::constraints(const double fraction) const
+{
+  return load_case_->constraints(stage_, fraction);
+}
+
+template <int dim>
+void ExplicitSolver<dim>::commit_corotational()
+{
+  if (prm_.elements.corotational)
+    for (IpState<dim>& p : ip_)
+      p.commit_corotational();
+}
+
+template <int dim>
+void ExplicitSolver<dim>::stop_if_signalled() const
+{
+  if (const int signal = stop_signal_received())
+    throw StopSignal{signal};
+}
+
+template <int dim>
+LoadStepIndex ExplicitSolver<dim>::load_step() const
+{
+  return {step_, step_in_stage_, load_case_->steps_in_stage(stage_), total_steps()};
 }
 
 template class ExplicitSolver<2>;

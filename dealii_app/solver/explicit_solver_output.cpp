@@ -23,7 +23,7 @@ template <int dim>
 void ExplicitSolver<dim>::output_step(unsigned int iterations)
 {
   const StepStatistics stats = gather_step_statistics();
-  const double axial = load_case_->axial_strain(stage_, displacement_);
+  const double axial = load_case_->axial_strain(stage_, fields_.displacement);
   write_particle_dumps();
   // Load balance: RVE seconds of the busiest and of the mean rank (collective).
   const Utilities::MPI::MinMaxAvg rve_seconds =
@@ -141,12 +141,12 @@ void ExplicitSolver<dim>::write_summary_row(const StepStatistics& st, unsigned i
   const double wall = MPI_Wtime() - t_start_;
   std::ostringstream row;
   row << std::setprecision(12) << step_ << ',' << stage_ << ','
-      << (prm_.dynamics.dynamic ? time_ : step_ - 1 + load_fraction_) << ','
+      << analysis_->time().value_or(step_ - 1 + load_fraction_) << ','
       << axial << ',' << st.ratio_mean << ',' << st.ratio_min << ',' << st.ratio_max << ','
       << st.s11_mean << ',' << st.s22_mean << ',' << st.j_rel_mean << ',' << st.coordination_mean
       << ',' << st.anisotropy_mean << ',' << iterations << ',' << cost_in_step_.dem_steps << ',' << wall
-      << ',' << load_case_->top_reaction(f_int_) << ','
-      << load_case_->affine_deviation(load_fraction_, displacement_) << ',' << cost_in_step_.solves
+      << ',' << load_case_->top_reaction(fields_.f_int) << ','
+      << load_case_->affine_deviation(load_fraction_, fields_.displacement) << ',' << cost_in_step_.solves
       << ',' << rve_seconds.max << ',' << rve_seconds.avg;
   if (dim == 3) // new columns go at the end (architecture.md)
     row << ',' << st.s33_mean;
@@ -155,7 +155,7 @@ void ExplicitSolver<dim>::write_summary_row(const StepStatistics& st, unsigned i
   summary_ << row.str() << std::flush;
   pcout_ << "stage " << stage_ << " step " << std::setw(3) << step_ << "  axial strain "
          << std::setw(9) << axial << "  stress ratio " << std::setw(9) << st.ratio_mean
-         << (prm_.dynamics.dynamic ? "  time steps " : "  DR iterations ") << std::setw(6) << iterations << "  DEM steps " << cost_in_step_.dem_steps
+         << "  " << analysis_->iteration_name() << " " << std::setw(6) << iterations << "  DEM steps " << cost_in_step_.dem_steps
          << (prm_.material.steps_per_iteration > 0
                ? "  unconverged RVE returns " + std::to_string(cost_in_step_.unconverged)
                : std::string())
@@ -170,7 +170,7 @@ void ExplicitSolver<dim>::write_vtu(const StepStatistics& st)
   data_out.attach_dof_handler(dof_handler_);
   std::vector<DataComponentInterpretation::DataComponentInterpretation> vec(
     dim, DataComponentInterpretation::component_is_part_of_vector);
-  data_out.add_data_vector(displacement_, std::vector<std::string>(dim, "displacement"),
+  data_out.add_data_vector(fields_.displacement, std::vector<std::string>(dim, "displacement"),
                            DataOut<dim>::type_dof_data, vec);
   data_out.add_data_vector(st.s11, "sigma11");
   data_out.add_data_vector(st.s22, "sigma22");

@@ -117,6 +117,8 @@ struct Dynamics
   double rayleigh_alpha; ///< mass-proportional damping C = alpha M + beta K [1/time]
   double rayleigh_beta;  ///< stiffness-proportional damping [time]
   double mass_scaling;   ///< density factor >= 1 of the mass matrix (waves slower by its square root)
+  /// The factor of the density in the mass matrix: 'Mass scaling' in dynamics, 1 for dynamic relaxation.
+  double mass_factor() const { return dynamic ? mass_scaling : 1.0; }
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm);
 };

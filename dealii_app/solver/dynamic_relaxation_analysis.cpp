@@ -23,14 +23,10 @@ void DynamicRelaxationAnalysis<dim>::start()
   system_.fields().boundary_values = system_.constraints(0.0);
 }
 
-// One load step with the multiple-time-stepping policy: bounded RVE solves
-// until (M9) first holds, then full ones until it holds again, so that a
-// step ends on relaxed RVEs. Too few DEM steps per iteration let the RVE
-// stresses lag the macro motion so much that (M9) is never reached (2x4
-// with 10 steps: benchmarks/perf); after max_bounded_ iterations the step
-// continues with full solves. With 'Ramp iterations' = N > 0 the step's
-// load (prescribed displacements and external forces) grows linearly over
-// its first N iterations, and (M9) is tested only once it is complete.
+// One load step: the predictor, then DR iterations until (M9) holds with
+// full RVE solves. With 'Ramp iterations' = N > 0 the step's load
+// (prescribed displacements and external forces) grows linearly over its
+// first N iterations, and (M9) is tested only once it is complete.
 template <int dim>
 typename Analysis<dim>::StepResult DynamicRelaxationAnalysis<dim>::solve_step(const double begin,
                                                                              const double end)
@@ -41,19 +37,11 @@ typename Analysis<dim>::StepResult DynamicRelaxationAnalysis<dim>::solve_step(co
     return it >= ramp ? end : begin + (end - begin) * it / ramp;
   };
   MacroFields& x = system_.fields();
-  Material<dim>& material = system_.material();
-  const LoadStepIndex index = system_.load_step();
   x.velocity = 0.0;
-  // The first step of a stage has no increment of its kind (stage 1's is isotropic).
-  if (dr.predictor == DynamicRelaxation::Predictor::extrapolate && index.step_in_stage > 1)
-    x.displacement.add((end - begin) * index.steps_in_stage, system_.last_step_increment());
-  else if (dr.boundary_extension == DynamicRelaxation::BoundaryExtension::elastic)
-    extend_boundary_increment(end);
+  predict(begin, end);
   apply_boundary_values(fraction_at(1));
   integrator_.start();
-  bool bounded = material.has_step_limit() && prm_.material.steps_per_iteration > 0;
-  if (material.has_step_limit())
-    material.set_step_limit(bounded ? prm_.material.steps_per_iteration : 0);
+  MultipleTimeStepping mts(system_.material(), prm_.material.steps_per_iteration);
   for (unsigned int it = 1; it <= dr.max_iterations; ++it)
   {
     system_.stop_if_signalled();
@@ -62,13 +50,7 @@ typename Analysis<dim>::StepResult DynamicRelaxationAnalysis<dim>::solve_step(co
     system_.assemble_internal_force();
     system_.assemble_external_force(fraction_at(it));
     const double e_kin = integrator_.advance(x.displacement, x.velocity, x.f_int, x.f_ext, x.boundary_values);
-    const bool relaxed = it >= ramp && integrator_.converged(it, e_kin);
-    if (bounded && (relaxed || it >= max_bounded_))
-    {
-      bounded = false;
-      material.set_step_limit(0);
-    }
-    else if (relaxed)
+    if (mts.converged(it, it >= ramp && integrator_.converged(it, e_kin)))
     {
       // P at the converged displacement. (With committed RVE history this is
       // one more trial solve from the committed state, at the final U.)
@@ -76,8 +58,42 @@ typename Analysis<dim>::StepResult DynamicRelaxationAnalysis<dim>::solve_step(co
       return {it, end};
     }
   }
-  throw std::runtime_error("load step " + std::to_string(index.step) + ": dynamic relaxation did not "
-                           "converge within 'Max iterations' = " + std::to_string(dr.max_iterations));
+  throw std::runtime_error("load step " + std::to_string(system_.load_step().step) +
+                           ": dynamic relaxation did not converge within 'Max iterations' = " +
+                           std::to_string(dr.max_iterations));
+}
+
+template <int dim>
+DynamicRelaxationAnalysis<dim>::MultipleTimeStepping::MultipleTimeStepping(Material<dim>& material,
+                                                                           const long steps_per_iteration)
+  : material_(material), bounded_(material.has_step_limit() && steps_per_iteration > 0)
+{
+  if (material_.has_step_limit())
+    material_.set_step_limit(bounded_ ? steps_per_iteration : 0);
+}
+
+template <int dim>
+bool DynamicRelaxationAnalysis<dim>::MultipleTimeStepping::converged(const unsigned int it, const bool relaxed)
+{
+  if (bounded_ && (relaxed || it >= max_bounded))
+  {
+    bounded_ = false;
+    material_.set_step_limit(0);
+    return false;
+  }
+  return relaxed;
+}
+
+// The first step of a stage has no increment of its kind (stage 1's is isotropic).
+template <int dim>
+void DynamicRelaxationAnalysis<dim>::predict(const double begin, const double end)
+{
+  const DynamicRelaxation& dr = prm_.relaxation;
+  const LoadStepIndex index = system_.load_step();
+  if (dr.predictor == DynamicRelaxation::Predictor::extrapolate && index.step_in_stage > 1)
+    system_.fields().displacement.add((end - begin) * index.steps_in_stage, system_.last_step_increment());
+  else if (dr.boundary_extension == DynamicRelaxation::BoundaryExtension::elastic)
+    extend_boundary_increment(end);
 }
 
 template <int dim>

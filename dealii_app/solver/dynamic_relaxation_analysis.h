@@ -28,6 +28,30 @@ public:
   const char* iteration_name() const override { return "DR iterations"; }
 
 private:
+  /**
+   * Multiple time stepping of RVE materials ('DEM steps per iteration' = n > 0):
+   * RVE solves bounded to n DEM steps until (M9) first holds, then full ones
+   * until it holds again, so that a step ends on relaxed RVEs. Too few DEM
+   * steps per iteration let the RVE stresses lag the macro motion so much that
+   * (M9) is never reached (2x4 with 10 steps: benchmarks/perf); after
+   * max_bounded iterations the step continues with full solves.
+   */
+  class MultipleTimeStepping
+  {
+  public:
+    MultipleTimeStepping(Material<dim>& material, long steps_per_iteration);
+    /// After iteration @p it: true if the step is converged (relaxed with full solves).
+    bool converged(unsigned int it, bool relaxed);
+
+  private:
+    static constexpr unsigned int max_bounded = 1000;
+    Material<dim>& material_;
+    bool bounded_;
+  };
+
+  /// The start of a step's iterate: the last step's increment extrapolated
+  /// ('Predictor'), or the elastic extension of the prescribed increment.
+  void predict(double begin, double end);
   /// Prescribed displacements of load fraction @p fraction, at rest.
   void apply_boundary_values(double fraction);
   /// Moves the free dofs by the elastic extension of the prescribed increment up to @p fraction_end.
@@ -36,7 +60,5 @@ private:
   MacroSystem<dim>& system_;
   const Parameters& prm_;
   DynamicRelaxationIntegrator integrator_;
-  /// Iterations with bounded RVE solves after which a step continues with full ones.
-  static constexpr unsigned int max_bounded_ = 1000;
 };
 } // namespace fe2dem::macro

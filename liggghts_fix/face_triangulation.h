@@ -3,7 +3,7 @@
  * Delaunay triangulation of points in a plane, for the 3D frame membrane:
  * the frame particles on one cell face, in their in-plane reference
  * coordinates, become the vertices of the triangles that inner particles
- * may not pass (fix_rve_servo_membrane.tpp).
+ * may not pass (membrane_3d.h).
  */
 #pragma once
 

@@ -5,12 +5,11 @@
 //   fix_rve_servo_solve.tpp     servo state machine and homogenisation
 //   fix_rve_servo_restart.tpp   the state in restart files
 //   fix_rve_servo_timed.tpp     timed solves (explicit dynamics of the macro scale)
-//   fix_rve_servo_membrane.tpp  the frame membrane (2D), dispatch to
-//   fix_rve_servo_membrane_3d.tpp  the 3D frame membrane
+//   fix_rve_servo_membrane.tpp  the frame membrane's side in the fix (Membrane<dim>:
+//                               membrane_2d.cpp, membrane_3d.cpp)
 #include "fix_rve_servo.tpp"
 #include "fix_rve_servo_input.tpp"
 #include "fix_rve_servo_membrane.tpp"
-#include "fix_rve_servo_membrane_3d.tpp"
 #include "fix_rve_servo_restart.tpp"
 #include "fix_rve_servo_solve.tpp"
 #include "fix_rve_servo_timed.tpp"

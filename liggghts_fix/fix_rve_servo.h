@@ -47,7 +47,7 @@
  *                              (and so into P). 3D: the same with the Delaunay
  *                              triangles of each face's frame particles, acting once
  *                              a centre crosses a triangle's plane
- *                              (fix_rve_servo_membrane_3d.tpp). Needs kn or Debian's
+ *                              (membrane_3d.h). Needs kn or Debian's
  *                              hertz model. Default yes (see README)
  *     timed_servo integral|proportional  the frame servo of timed solves: with integral
  *                              action (each correction also carries the running mean of
@@ -97,6 +97,8 @@
 
 #include "atom.h"
 #include "fix.h"
+#include "membrane_2d.h"
+#include "membrane_3d.h"
 #include "rve_homogenisation.h"
 
 #include <array>
@@ -315,54 +317,11 @@ private:
 
   void remove_affine_velocity();
 
-  // --- frame membrane (fix_rve_servo_membrane.tpp, _3d.tpp) -----------------
-  /// Segments between neighbouring frame particles, grouped by cell side.
+  // --- frame membrane (membrane_2d.h, membrane_3d.h) -----------------------
+  /// The membrane's segments (2D) or triangles (3D) from the frame.
   void build_membrane();
   /// Adds membrane forces to inner and frame particles (before frame forces are recorded).
   void apply_membrane();
-  struct MembraneSegment
-  {
-    int a = 0, b = 0;     ///< frame indices, counter-clockwise
-    double lo = 0, hi = 0; ///< reference extent along the side
-  };
-  std::array<std::vector<MembraneSegment>, 4> membrane_; ///< bottom, right, top, left; sorted by hi
-  std::array<bool, 4> membrane_ordered_{};               ///< lo sorted as well (bisection may stop early)
-  struct MembraneLine ///< a segment's current line (refreshed each step for the candidates' segments)
-  {
-    int ia = 0, ib = 0;          ///< local indices of its frame particles
-    fe2dem::Vec2 xa{}, e{}, n{}; ///< start, xb - xa and inward unit normal
-    fe2dem::Vec2 e_over_length_sq{}; ///< e / |e|^2, for the parameter t
-  };
-  std::array<std::vector<MembraneLine>, 4> membrane_lines_; ///< parallel to membrane_
-  struct MembraneCandidate
-  {
-    int i = 0;              ///< local index of the inner particle
-    int side = 0, segment = 0; ///< membrane_[side][segment]
-  };
-  std::vector<MembraneCandidate> membrane_candidates_; ///< see collect_membrane_candidates()
-  bigint membrane_built_at_ = -1; ///< neighbor->lastcall when the candidates were collected
-  bool membrane_stale_ = true;    ///< F or the atoms changed: collect again
-  std::vector<std::pair<int, int>> membrane_used_; ///< (side, segment) of the candidates, each once
-  /// Refreshes membrane_lines_[side][k] from the current frame positions.
-  void update_membrane_line(int side, int k);
-  void collect_membrane_candidates();
-  // 3D (fix_rve_servo_membrane_3d.tpp): candidates use side = face 2 a (x_a = 0)
-  // or 2 a + 1 (x_a = L_a) and segment = triangle index
-  struct MembraneTriangle
-  {
-    std::array<int, 3> q{}; ///< frame indices, counter-clockwise in (x_b, x_c), b = a+1, c = a+2
-  };
-  std::array<std::vector<MembraneTriangle>, 6> membrane_faces_;
-  struct MembraneBox ///< a triangle's current extent in reference-cell coordinates
-  {
-    std::array<double, 2> lo{}, hi{}; ///< in-plane (x_b, x_c)
-    double reach = 0.0;               ///< deepest vertex into the cell along the face normal
-  };
-  std::array<std::vector<MembraneBox>, 6> membrane_boxes_; ///< parallel to membrane_faces_
-  std::array<double, 6> membrane_face_reach_{};            ///< deepest reach of each face
-  void build_membrane_3d();
-  void collect_membrane_candidates_3d();
-  void apply_membrane_3d();
   /// Particle i is an inner particle the fix integrates (in its group, not in the frame).
   bool is_inner(int i) const
   {
@@ -438,6 +397,7 @@ private:
 
   // per-step records
   std::vector<int> frame_local_;      ///< local index of each frame particle
+  fe2dem::Membrane<dim> membrane_;    ///< keyword membrane (membrane.h)
   std::vector<Vector> frame_force_;   ///< a_q
   std::vector<Rotation> frame_moment_; ///< m_q
   double unbalanced_sq_sum_ = 0.0;

@@ -22,7 +22,7 @@ void FixRveServo<dim>::begin_solve(const Tensor* F)
 {
   const Tensor F_before = F_;
   F_ = F ? checked_deformation(*F) : evaluate_deformation();
-  membrane_stale_ = true; // its candidate search depends on F
+  membrane_.mark_stale(); // its candidate search depends on F
   if (!keep_fluctuations_)
   {
     for (auto& w : w_)

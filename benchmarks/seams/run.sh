@@ -6,6 +6,9 @@
 #   demo_1x1      dealii_app/examples/biaxial_1x1.prm, 2 ranks (scripts/run-demo.sh)
 #   mts20_2x4     dealii_app/examples/biaxial_2x4.prm, 2 ranks, check10 + mts20
 #   elastic_block dealii_app/examples/elastic_block.prm (neo-Hookean)
+#   recommended_2x4  benchmarks/lbs2018/lbs2018.prm: 2x4, the recommended accelerations, 2 ranks
+#   one_element_3d   tests/one_element_3d/shear_macro.prm, 3D with RVEs (dynamic relaxation)
+#   dynamic_rve   tests/dynamics_rve/column_3d.prm, 3D RVEs in explicit dynamics, 2 ranks
 # Compare two OUT_DIRs with compare.py.
 # Usage: benchmarks/seams/run.sh BUILD_DIR OUT_DIR [CASE...]
 set -euo pipefail
@@ -13,7 +16,7 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 build="$(realpath -m "$1")" out="$(realpath -m "$2")"
 shift 2
-cases=("${@:-one_element one_element_rve demo_1x1 mts20_2x4 elastic_block}")
+cases=("${@:-one_element one_element_rve demo_1x1 mts20_2x4 elastic_block recommended_2x4 one_element_3d dynamic_rve}")
 read -r -a cases <<<"${cases[*]}"
 mpirun=(mpirun --allow-run-as-root --oversubscribe)
 fe2dem="$build/dealii_app/solver/fe2dem"
@@ -43,6 +46,15 @@ for c in "${cases[@]}"; do
     elastic_block)
       prm_of "$root/dealii_app/examples/elastic_block.prm" "$d" > "$d/case.prm"
       "${mpirun[@]}" -np 1 "$fe2dem" "$d/case.prm" > "$d/log" 2>&1 ;;
+    recommended_2x4)
+      prm_of "$root/benchmarks/lbs2018/lbs2018.prm" "$d" > "$d/case.prm"
+      "${mpirun[@]}" -np 2 "$fe2dem" "$d/case.prm" > "$d/log" 2>&1 ;;
+    one_element_3d)
+      prm_of "$root/tests/one_element_3d/shear_macro.prm" "$d" > "$d/case.prm"
+      "${mpirun[@]}" -np 1 "$fe2dem" "$d/case.prm" > "$d/log" 2>&1 ;;
+    dynamic_rve)
+      prm_of "$root/tests/dynamics_rve/column_3d.prm" "$d" > "$d/case.prm"
+      "${mpirun[@]}" -np 2 "$fe2dem" "$d/case.prm" > "$d/log" 2>&1 ;;
     *) echo "unknown case '$c'" >&2; exit 2 ;;
   esac
   awk -v s="$start" -v e="$(date +%s.%N)" -v c="$c" 'BEGIN {printf "%s %.1f s\n", c, e - s}'

@@ -45,8 +45,7 @@ public:
     return refer(inner_->solve_increment(d_eps));
   }
   const RveResponse<dim>& response() const override { return response_; }
-  void set_step_limit(long steps) override { inner_->set_step_limit(steps); }
-  void set_timed_steps(long steps) override { inner_->set_timed_steps(steps); }
+  void set_budget(const SolveBudget& budget) override { inner_->set_budget(budget); }
   void inject_fault(RveFault fault) override { inner_->inject_fault(fault); }
   void commit() override { inner_->commit(); }
   void rollback() override

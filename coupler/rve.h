@@ -12,6 +12,7 @@
 
 #include "rve_response.h"
 #include "rve_setup.h"
+#include "solve_budget.h"
 
 #include <Eigen/Dense>
 
@@ -44,20 +45,12 @@ public:
   /// The response of the current state (last solve, or as built / restored).
   virtual const RveResponse<dim>& response() const = 0;
   /**
-   * Multiple time stepping ([LSYF] Eq. 66): later solves run at most
-   * @p steps DEM steps and return the state they stopped in
-   * (RveResponse::converged false) instead of failing. 0: to convergence.
+   * How far later solves may go (solve_budget.h): to convergence (the
+   * default), bounded by a number of DEM steps (multiple time stepping,
+   * [LSYF] Eq. 66: the state as it is, RveResponse::converged false), or
+   * exactly a number of DEM steps (explicit dynamics of the macro scale).
    */
-  virtual void set_step_limit(long steps) = 0;
-  /**
-   * Explicit dynamics of the macro scale: later solves advance the RVE by
-   * exactly @p steps DEM steps (the macro time step over the DEM step), the
-   * frame moving to the new F with the servo as a continuous feedback,
-   * without a convergence stop, and return the stresses averaged over the
-   * solve's checks. 0 (default): quasi-static solves.
-   * @pre @p steps is 0 or a multiple of the RVE's check interval.
-   */
-  virtual void set_timed_steps(long steps) = 0;
+  virtual void set_budget(const SolveBudget& budget) = 0;
   /**
    * Testing: makes the next solve fail with @p fault. A step budget lasts
    * until the next rollback or restore (which bring the template's back).

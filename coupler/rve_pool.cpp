@@ -218,19 +218,11 @@ std::vector<RveResponse<dim>> RvePool<dim>::solve(const std::vector<Tensor>& F)
 }
 
 template <int dim>
-void RvePool<dim>::set_step_limit(long steps)
+void RvePool<dim>::set_budget(const SolveBudget& budget)
 {
   for (auto& [k, rve] : local_)
-    rve->set_step_limit(steps);
-  step_limit_ = steps;
-}
-
-template <int dim>
-void RvePool<dim>::set_timed_steps(long steps)
-{
-  for (auto& [k, rve] : local_)
-    rve->set_timed_steps(steps);
-  timed_steps_ = steps;
+    rve->set_budget(budget);
+  budget_ = budget;
 }
 
 template <int dim>
@@ -288,8 +280,7 @@ void RvePool<dim>::move(std::size_t k, int to)
     else
     {
       local_[k] = factory_->restore(state);
-      local_[k]->set_step_limit(step_limit_);
-      local_[k]->set_timed_steps(timed_steps_);
+      local_[k]->set_budget(budget_);
     }
   }
   owner_[k] = to;

@@ -85,14 +85,8 @@ public:
    * response is reused (RveResponse::solved = false). 0 (default): always solve.
    */
   void set_skip_tolerance(double tolerance) { skip_tolerance_ = tolerance; }
-  /**
-   * Multiple time stepping: every solve() runs at most @p steps DEM steps per
-   * RVE and returns unconverged states as they are (RveResponse::converged =
-   * false; see Rve::set_step_limit). 0 (default): every solve runs to convergence.
-   */
-  void set_step_limit(long steps);
-  /// Explicit dynamics: every solve() advances each RVE by @p steps DEM steps (Rve::set_timed_steps).
-  void set_timed_steps(long steps);
+  /// The budget of every later solve of every RVE (Rve::set_budget), kept across moves.
+  void set_budget(const SolveBudget& budget);
 
   /// Accepts the last solves as the converged load step.
   void commit();
@@ -155,7 +149,6 @@ private:
   double local_seconds_ = 0.0;
   double local_loop_seconds_ = 0.0;
   double skip_tolerance_ = 0.0;
-  long step_limit_ = 0;
-  long timed_steps_ = 0;
+  SolveBudget budget_;
 };
 } // namespace fe2dem

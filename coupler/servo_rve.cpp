@@ -213,7 +213,7 @@ template <int dim>
 const typename ServoRve<dim>::Result& ServoRve<dim>::hold_at_rest(const Matrix& F)
 {
   if (timed_steps_ <= 0)
-    throw std::logic_error("ServoRve::hold_at_rest needs timed solves (set_timed_steps)");
+    throw std::logic_error("ServoRve::hold_at_rest needs timed solves (set_budget(SolveBudget::timed(n)))");
   at_committed_state_ = false;
   continuous_last_ = false;
   TimedTally tally;

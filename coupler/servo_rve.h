@@ -81,13 +81,16 @@ public:
   bool last_solve_converged() const { return last_converged_; }
 
   // --- Rve<dim> ------------------------------------------------------------
-  /// macro_to_rve, solve(F, step limit of set_step_limit), rve_to_macro.
+  /// macro_to_rve, solve(F, the step limit of set_budget), rve_to_macro.
   const RveResponse<dim>& solve(const Tensor& F) override;
   const RveResponse<dim>& solve_increment(const Tensor& d_eps) override;
   const RveResponse<dim>& response() const override;
-  void set_step_limit(long steps) override { step_limit_ = steps; }
-  /// Applied to the fix (FixRveServo::set_timed_steps) at every solve, restored instances included.
-  void set_timed_steps(long steps) override { timed_steps_ = steps; }
+  /// Timed steps go to the fix (FixRveServo::set_timed_steps) at every solve, restored instances included.
+  void set_budget(const SolveBudget& budget) override
+  {
+    step_limit_ = budget.step_limit();
+    timed_steps_ = budget.timed_steps();
+  }
   void inject_fault(RveFault fault) override;
   /// Overrides the step budget after which a solve fails, until the next rollback or restore.
   void set_step_budget(long steps);
@@ -110,12 +113,12 @@ public:
   /// their number.
   const Result& result() const { return continuous_last_ ? continuous_result_ : fix_->result(); }
   /**
-   * Holds the RVE at @p F: timed solves of set_timed_steps() steps, the
+   * Holds the RVE at @p F: timed solves of the set_budget() steps, the
    * servo acting at every check, until the fix's quasi-static test passes
    * at the end of one (FixRveServo::at_rest(): relaxed and balanced).
    * result() is then the last one's, with dem_steps and membrane_steps
    * summed over all and servo_iterations = their number.
-   * @pre set_timed_steps(n) with n > 0.
+   * @pre set_budget(SolveBudget::timed(n)).
    * @throws RveSolveError (over budget) if not at rest within the step budget.
    */
   const Result& hold_at_rest(const Matrix& F);
@@ -171,8 +174,8 @@ private:
   long budget_ = 0;      ///< the template's step budget (max_steps), restored after bounded solves
   bool limited_ = false; ///< the fix's max_steps is currently a bound of limit_steps()
   bool last_converged_ = true;
-  long step_limit_ = 0;               ///< of set_step_limit()
-  long timed_steps_ = 0;              ///< of set_timed_steps()
+  long step_limit_ = 0;               ///< of set_budget(): bounded solves
+  long timed_steps_ = 0;              ///< of set_budget(): timed solves
   bool stretch_next_ = false;         ///< inject_fault(RveFault::liggghts_error) pending
   mutable RveResponse<dim> response_;   ///< rve_to_macro of the fix's result
   bool continuous_last_ = false;        ///< the last solve was a continuous one

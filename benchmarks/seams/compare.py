@@ -15,7 +15,7 @@ import sys
 import h5py
 import numpy as np
 
-WALL = {"wall_s", "rve_rank_max_s", "rve_rank_mean_s"}
+WALL = {"wall_s", "rve_rank_max_s", "rve_rank_mean_s", "rve_loop_mean_s", "rve_iteration_max_s"}
 
 
 def rows_without_wall(path):

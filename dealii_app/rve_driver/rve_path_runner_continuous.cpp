@@ -72,7 +72,7 @@ void RvePathRunner<dim>::run_continuous_stage()
   const double scale = std::max(prm_.path.pressure, 1e-12);
 
   const double F_axial_ic = F_[axial], F12_ic = F_[1];
-  rve_.set_timed_steps(n);
+  rve_.set_budget(SolveBudget::timed(n));
   long interval = 0;
   for (unsigned int row = 1; row <= prm_.path.loading_steps; ++row)
   {
@@ -96,7 +96,7 @@ void RvePathRunner<dim>::run_continuous_stage()
       solve(F_, true);
     write_row(rve_.result(), 0);
   }
-  rve_.set_timed_steps(0);
+  rve_.set_budget(SolveBudget::converge());
 }
 
 // The rest of the class is instantiated in rve_path_runner.cpp.

@@ -92,7 +92,7 @@ template <int dim>
 void CentralDifferenceAnalysis<dim>::prepare_material()
 {
   if (dem_steps_per_macro_step_ > 0)
-    system_.material().set_timed_steps(dem_steps_per_macro_step_);
+    system_.material().set_budget(SolveBudget::timed(dem_steps_per_macro_step_));
 }
 
 // Velocity and acceleration of the prescribed dofs at time t, by central

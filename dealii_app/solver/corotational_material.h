@@ -53,9 +53,8 @@ public:
   {
     return inner_->strain_energy_density(F);
   }
-  bool has_step_limit() const override { return inner_->has_step_limit(); }
-  void set_step_limit(long steps) override { inner_->set_step_limit(steps); }
-  void set_timed_steps(long dem_steps) override { inner_->set_timed_steps(dem_steps); }
+  bool has_solve_budget() const override { return inner_->has_solve_budget(); }
+  void set_budget(const SolveBudget& budget) override { inner_->set_budget(budget); }
   void commit() override { inner_->commit(); }
   void rollback() override { inner_->rollback(); }
   void rebalance() override { inner_->rebalance(); }

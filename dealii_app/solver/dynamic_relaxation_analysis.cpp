@@ -66,10 +66,10 @@ typename Analysis<dim>::StepResult DynamicRelaxationAnalysis<dim>::solve_step(co
 template <int dim>
 DynamicRelaxationAnalysis<dim>::MultipleTimeStepping::MultipleTimeStepping(Material<dim>& material,
                                                                            const long steps_per_iteration)
-  : material_(material), bounded_(material.has_step_limit() && steps_per_iteration > 0)
+  : material_(material), bounded_(material.has_solve_budget() && steps_per_iteration > 0)
 {
-  if (material_.has_step_limit())
-    material_.set_step_limit(bounded_ ? steps_per_iteration : 0);
+  if (material_.has_solve_budget())
+    material_.set_budget(bounded_ ? SolveBudget::bounded(steps_per_iteration) : SolveBudget::converge());
 }
 
 template <int dim>
@@ -78,7 +78,7 @@ bool DynamicRelaxationAnalysis<dim>::MultipleTimeStepping::converged(const unsig
   if (bounded_ && (relaxed || it >= max_bounded))
   {
     bounded_ = false;
-    material_.set_step_limit(0);
+    material_.set_budget(SolveBudget::converge());
     return false;
   }
   return relaxed;

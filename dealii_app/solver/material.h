@@ -10,6 +10,7 @@
 
 #include "ip_state.h"
 #include "rve_setup.h"
+#include "solve_budget.h"
 
 #include <deal.II/base/tensor.h>
 
@@ -57,16 +58,14 @@ public:
     return std::numeric_limits<double>::quiet_NaN();
   }
 
-  /// Whether set_step_limit() bounds evaluations (multiple time stepping).
-  virtual bool has_step_limit() const { return false; }
-  /// Later evaluations run at most @p steps DEM steps per RVE (0: to convergence).
-  virtual void set_step_limit(long /*steps*/) {}
+  /// Whether set_budget() changes evaluations (RVEs; analytic laws have no solves).
+  virtual bool has_solve_budget() const { return false; }
   /**
-   * Explicit dynamics: later evaluations advance every RVE by @p dem_steps
-   * DEM steps, the macro time step (Rve::set_timed_steps). Analytic laws
-   * have no time of their own: nothing to do.
+   * How far the solves of later evaluations may go (solve_budget.h): to
+   * convergence, bounded (multiple time stepping) or timed (explicit
+   * dynamics: the macro time step in DEM steps).
    */
-  virtual void set_timed_steps(long /*dem_steps*/) {}
+  virtual void set_budget(const SolveBudget& /*budget*/) {}
   /// The last evaluation is the converged load step.
   virtual void commit() {}
   /// Back to the state of the last commit() (a load-step cut).

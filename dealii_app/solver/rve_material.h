@@ -31,9 +31,8 @@ public:
 
   EvaluationCost evaluate(std::vector<IpState<dim>>& points) override;
   double wave_speed() const override { return wave_speed_; }
-  bool has_step_limit() const override { return true; }
-  void set_step_limit(long steps) override { pool_->set_step_limit(steps); }
-  void set_timed_steps(long dem_steps) override { pool_->set_timed_steps(dem_steps); }
+  bool has_solve_budget() const override { return true; }
+  void set_budget(const SolveBudget& budget) override { pool_->set_budget(budget); }
   void commit() override { pool_->commit(); }
   void rollback() override { pool_->rollback(); }
   void rebalance() override { pool_->rebalance(); }

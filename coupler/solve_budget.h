@@ -1,0 +1,54 @@
+/**
+ * @file solve_budget.h
+ * How far the solves of an RVE may go, as one value (issue 36), instead of
+ * a step limit and timed steps whose precedence was hidden:
+ *
+ *  - converge(): quasi-static, run until relaxed and balanced (within the
+ *    template's step budget, beyond which the solve fails);
+ *  - bounded(n): multiple time stepping ([LSYF] Eq. 66): at most n DEM
+ *    steps, then the state as it is (RveResponse::converged false). n is
+ *    rounded up to whole check intervals (a solve stops only on a check);
+ *  - timed(n): explicit dynamics: exactly n DEM steps (the macro time step
+ *    over the DEM step), the frame moving to the new F with the servo as a
+ *    continuous feedback, stresses averaged over the solve's checks.
+ *    @pre n is a multiple of the RVE's check interval.
+ *
+ * Plain data: the macro solver uses it without LIGGGHTS.
+ */
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace fe2dem
+{
+struct SolveBudget
+{
+  enum class Kind
+  {
+    converge,
+    bounded,
+    timed
+  };
+  Kind kind = Kind::converge;
+  long steps = 0; ///< DEM steps of bounded and timed solves
+
+  static SolveBudget converge() { return {}; }
+  static SolveBudget bounded(long n) { return make(Kind::bounded, n); }
+  static SolveBudget timed(long n) { return make(Kind::timed, n); }
+
+  /// The step limit of a bounded solve (0: none).
+  long step_limit() const { return kind == Kind::bounded ? steps : 0; }
+  /// The DEM steps of a timed solve (0: not timed).
+  long timed_steps() const { return kind == Kind::timed ? steps : 0; }
+
+private:
+  static SolveBudget make(Kind kind, long n)
+  {
+    if (n <= 0)
+      throw std::invalid_argument("SolveBudget: a bounded or timed solve needs a number of DEM steps > 0, not " +
+                                  std::to_string(n));
+    return {kind, n};
+  }
+};
+} // namespace fe2dem

@@ -65,7 +65,7 @@ def main(da, db):
             continue
         for name in sorted(files):
             a, b = os.path.join(dirpath, name), os.path.join(db, rel, name)
-            if name in ("log", "case.prm"):
+            if name in ("log", "case.prm", ".fe2dem.lock"):  # the lock names host and pid
                 continue
             if not os.path.exists(b):
                 problems.append(f"{b} missing")

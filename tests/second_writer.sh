@@ -21,7 +21,7 @@ trap 'kill -CONT $first 2> /dev/null' EXIT # never leave it paused
 for args in "case.prm" "case.prm --resume"; do
   out=$("$exe" $args 2>&1); rc=$?
   [[ $rc -ne 0 ]] || fail "'fe2dem $args' beside a running fe2dem exited 0"
-  grep -qF "is in use by another fe2dem run (process $first" <<<"$out" || fail "'fe2dem $args': message lacks the holder: $(tail -n 2 <<<"$out")"
+  grep -qF "is in use by another fe2dem or fe2dem-rve run (process $first" <<<"$out" || fail "'fe2dem $args': message lacks the holder: $(tail -n 2 <<<"$out")"
   echo "refused: fe2dem $args: $(grep -F 'in use' <<<"$out" | head -n 1 | cut -c1-160)"
 done
 kill -CONT $first

@@ -79,6 +79,9 @@ template <int dim>
 void RvePathRunner<dim>::open_output()
 {
   std::filesystem::create_directories(prm_.output_directory);
+  // Before rve.csv is truncated: a second run into the same directory stops
+  // here and leaves the first one's rows alone (issue 39).
+  output_lock_ = std::make_unique<OutputLock>(prm_.output_directory);
   const std::string file = prm_.output_directory + "/rve.csv";
   csv_.open(file);
   if (!csv_)

@@ -14,12 +14,14 @@
  */
 #pragma once
 
+#include "output_lock.h"
 #include "path_parameters.h"
 #include "servo_rve.h"
 
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -79,6 +81,7 @@ private:
 
   const Parameters& prm_;
   ServoRve<dim> rve_;
+  std::unique_ptr<OutputLock> output_lock_; ///< this run owns the output directory
   std::ofstream csv_;
   unsigned int step_ = 0;
   long dem_steps_in_step_ = 0;      ///< over every solve of the current step (rve.csv)

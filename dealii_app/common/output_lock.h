@@ -4,13 +4,14 @@
  * OUTPUT/.fe2dem.lock, held from before anything in the directory is
  * truncated until the process ends. The kernel drops it when the holder
  * dies (even by SIGKILL), so a crashed run never blocks the next one. The
- * file holds the holder's host and PID, for the message.
+ * file holds the holder's host and PID, for the message. fe2dem and
+ * fe2dem-rve both take it.
  */
 #pragma once
 
 #include <string>
 
-namespace fe2dem::macro
+namespace fe2dem
 {
 class OutputLock
 {
@@ -28,4 +29,4 @@ public:
 private:
   int fd_ = -1;
 };
-} // namespace fe2dem::macro
+} // namespace fe2dem

@@ -8,7 +8,7 @@
 #include <cstring>
 #include <stdexcept>
 
-namespace fe2dem::macro
+namespace fe2dem
 {
 OutputLock::OutputLock(const std::string& directory)
 {
@@ -23,7 +23,7 @@ OutputLock::OutputLock(const std::string& directory)
     const ssize_t n = ::pread(fd_, holder, sizeof holder - 1, 0);
     ::close(fd_);
     fd_ = -1;
-    throw std::runtime_error("'Output directory' = '" + directory + "' is in use by another fe2dem run (" +
+    throw std::runtime_error("'Output directory' = '" + directory + "' is in use by another fe2dem or fe2dem-rve run (" +
                              (n > 0 ? std::string(holder, static_cast<std::size_t>(n)) : "holder unknown") +
                              ", lock file " + file + "): wait for it to end, or choose another "
                              "'Output directory'; nothing in the directory was changed");
@@ -40,4 +40,4 @@ OutputLock::~OutputLock()
   if (fd_ >= 0)
     ::close(fd_); // releases the flock
 }
-} // namespace fe2dem::macro
+} // namespace fe2dem

@@ -1,10 +1,12 @@
 #include "path_parameters.h"
+#include "parameter_file_check.h"
 #include "rve_tensor.h"
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 
@@ -188,6 +190,8 @@ std::vector<std::vector<double>> read_table(const std::string& file, unsigned in
 void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
 {
   const std::string base = std::filesystem::path(file).parent_path().string();
+  for (const std::string& w : check_parameter_file(file, "fe2dem-rve"))
+    std::cerr << "fe2dem-rve: warning: " << w << std::endl;
   prm.parse_input(file); // throws deal.II's message naming the line on unknown entries
   output_directory = resolve_path(base, prm.get("Output directory"));
   rve.parse_parameters(prm, base);

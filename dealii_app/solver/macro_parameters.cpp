@@ -1,13 +1,16 @@
 #include "macro_parameters.h"
 #include "file_hash.h"
+#include "parameter_file_check.h"
 
 #include <deal.II/base/function_parser.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
 
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 
@@ -585,6 +588,9 @@ void Parameters::declare_parameters(dealii::ParameterHandler& prm)
 
 void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
 {
+  for (const std::string& w : check_parameter_file(file, "fe2dem"))
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cerr << "fe2dem: warning: " << w << std::endl;
   prm.parse_input(file);
   const auto base = std::filesystem::path(file).parent_path();
   const std::string out = prm.get("Output directory");
@@ -610,6 +616,11 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
                              "condition N' with functions of the time t");
   if (dynamics.dynamic && material.type == MaterialParameters::Type::rve)
     material.check_for_dynamics();
+  if (!dynamics.dynamic && elements.one_point && elements.hourglass == FiniteElements::Hourglass::viscous)
+    throw std::runtime_error("subsection Finite elements: 'Hourglass control' = viscous acts on the "
+                             "hourglass velocities, which vanish as dynamic relaxation converges, so "
+                             "in a quasi-static run it controls nothing; use 'Hourglass control' = "
+                             "stiffness, or 'Analysis' = dynamic in subsection Dynamics");
   if (material.initial_pressure > 0.0 && loading.boundary != Loading::Boundary::conditions &&
       loading.isotropic_steps > 0)
     throw std::runtime_error("subsection Material: 'Initial pressure' = " +

@@ -259,8 +259,8 @@ void RveParameters::parse_parameters(dealii::ParameterHandler& prm, const std::s
   solve_interval = prm.get_integer("Solve interval");
   const std::string extra = prm.get("Template variables");
   prm.leave_subsection();
+  take_template_defaults(given); // before entry_variables() reads the values
   template_variables = parse_template_variables(extra);
-  take_template_defaults(given);
   require_positive("RVE", {{"Relaxation tolerance", relaxation_tolerance},
                            {"Servo tolerance", servo_tolerance}, {"Force gain", gain_a},
                            {"Moment gain", gain_m}, {"Max overlap", max_overlap},

@@ -158,19 +158,19 @@ const typename ServoRve<dim>::Result& ServoRve<dim>::solve(const Matrix& F, long
     rollback();
   at_committed_state_ = false;
   continuous_last_ = false;
-  const bool continuous = timed_steps_ == 0 && !stretch_next_ && setup_.solve_drive == SolveDrive::continuous;
+  const bool continuous = solve_budget_.timed_steps() == 0 && !stretch_next_ && setup_.solve_drive == SolveDrive::continuous;
   if (continuous && step_limit > 0)
     throw std::logic_error("ServoRve::solve: a step limit with 'Solve drive' = continuous (multiple "
                            "time stepping drives the RVE at the pace of the macro iterations; fe2dem "
                            "refuses the combination)");
-  const bool bounded = timed_steps_ == 0 && limit_steps(step_limit);
+  const bool bounded = solve_budget_.timed_steps() == 0 && limit_steps(step_limit);
   if (continuous)
   {
     solve_continuously(F);
     return result();
   }
-  if (fix_->timed_steps() != timed_steps_)
-    fix_->set_timed_steps(timed_steps_);
+  if (fix_->timed_steps() != solve_budget_.timed_steps())
+    fix_->set_timed_steps(solve_budget_.timed_steps());
   Matrix applied = F;
   if (stretch_next_)
     applied[0] *= 1e10;
@@ -212,13 +212,13 @@ void ServoRve<dim>::solve_continuously(const Matrix& F)
 template <int dim>
 const typename ServoRve<dim>::Result& ServoRve<dim>::hold_at_rest(const Matrix& F)
 {
-  if (timed_steps_ <= 0)
+  if (solve_budget_.timed_steps() <= 0)
     throw std::logic_error("ServoRve::hold_at_rest needs timed solves (set_budget(SolveBudget::timed(n)))");
   at_committed_state_ = false;
   continuous_last_ = false;
   TimedTally tally;
   const TimedStepsAgain again{this};
-  hold_until_at_rest(F, timed_steps_, tally);
+  hold_until_at_rest(F, solve_budget_.timed_steps(), tally);
   publish(tally);
   return result();
 }
@@ -303,7 +303,7 @@ void ServoRve<dim>::inject_fault(RveFault fault)
 template <int dim>
 const RveResponse<dim>& ServoRve<dim>::solve(const Tensor& F)
 {
-  solve(macro_to_rve<dim>(F), step_limit_);
+  solve(macro_to_rve<dim>(F), solve_budget_.step_limit());
   return response();
 }
 

@@ -86,11 +86,7 @@ public:
   const RveResponse<dim>& solve_increment(const Tensor& d_eps) override;
   const RveResponse<dim>& response() const override;
   /// Timed steps go to the fix (FixRveServo::set_timed_steps) at every solve, restored instances included.
-  void set_budget(const SolveBudget& budget) override
-  {
-    step_limit_ = budget.step_limit();
-    timed_steps_ = budget.timed_steps();
-  }
+  void set_budget(const SolveBudget& budget) override { solve_budget_ = budget; }
   void inject_fault(RveFault fault) override;
   /// Overrides the step budget after which a solve fails, until the next rollback or restore.
   void set_step_budget(long steps);
@@ -153,7 +149,7 @@ private:
   struct TimedStepsAgain
   {
     ServoRve* rve;
-    ~TimedStepsAgain() { rve->fix_->set_timed_steps(rve->timed_steps_); }
+    ~TimedStepsAgain() { rve->fix_->set_timed_steps(rve->solve_budget_.timed_steps()); }
   };
   /// Rebuilds the instance @p e left half-way from the committed state; throws RveSolveError.
   [[noreturn]] void recover_from(const std::exception& e);
@@ -174,8 +170,7 @@ private:
   long budget_ = 0;      ///< the template's step budget (max_steps), restored after bounded solves
   bool limited_ = false; ///< the fix's max_steps is currently a bound of limit_steps()
   bool last_converged_ = true;
-  long step_limit_ = 0;               ///< of set_budget(): bounded solves
-  long timed_steps_ = 0;              ///< of set_budget(): timed solves
+  SolveBudget solve_budget_;          ///< of set_budget()
   bool stretch_next_ = false;         ///< inject_fault(RveFault::liggghts_error) pending
   mutable RveResponse<dim> response_;   ///< rve_to_macro of the fix's result
   bool continuous_last_ = false;        ///< the last solve was a continuous one

@@ -35,6 +35,25 @@ std::string number(double v)
 }
 } // namespace
 
+std::map<std::string, LiggghtsVariable> liggghts_variables(const std::string& file)
+{
+  std::map<std::string, LiggghtsVariable> out;
+  std::ifstream in(file);
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number)
+  {
+    std::istringstream words(line.substr(0, line.find('#')));
+    std::string command, name;
+    LiggghtsVariable v;
+    if (words >> command >> name >> v.style >> v.value && command == "variable")
+    {
+      v.line = number;
+      out.emplace(name, v);
+    }
+  }
+  return out;
+}
+
 std::string resolve_path(const std::string& base_dir, const std::string& path)
 {
   if (path.empty() || std::filesystem::path(path).is_absolute())
@@ -57,22 +76,6 @@ namespace
 const std::map<std::string, std::string> entry_of = {
   {"mu", "Friction"}, {"kn", "Normal stiffness"}, {"kt", "Tangential stiffness"},
   {"dt", "Time step"}, {"servo_scale", "Servo residual scale"}};
-
-/// The default `variable NAME index VALUE` lines of a LIGGGHTS template.
-std::map<std::string, std::pair<std::string, int>> template_index_variables(const std::string& file)
-{
-  std::map<std::string, std::pair<std::string, int>> out;
-  std::ifstream in(file);
-  std::string line;
-  for (int number = 1; std::getline(in, line); ++number)
-  {
-    std::istringstream words(line.substr(0, line.find('#')));
-    std::string command, name, style, value;
-    if (words >> command >> name >> style >> value && command == "variable" && style == "index")
-      out.emplace(name, std::pair{value, number});
-  }
-  return out;
-}
 
 double to_number(const std::string& text, const std::string& what)
 {
@@ -108,19 +111,19 @@ void RveParameters::take_template_defaults(const std::map<std::string, std::stri
       servo_scale = "template";
       return;
     }
-    const auto defaults = template_index_variables(template_file);
+    const auto defaults = liggghts_variables(template_file);
     for (auto& [variable, text] : value)
       if (text == "template")
       {
         const auto it = defaults.find(variable);
-        if (it == defaults.end())
+        if (it == defaults.end() || it->second.style != "index")
           throw std::runtime_error("subsection RVE: '" + entry_of.at(variable) +
                                    "' = template, but the template " + template_file +
                                    " has no line 'variable " + variable +
                                    " index VALUE'; give the entry a value");
-        text = it->second.first;
+        text = it->second.value;
         if (variable == "servo_scale" && text != "inertia" && text != "contact")
-          throw std::runtime_error(template_file + ":" + std::to_string(it->second.second) +
+          throw std::runtime_error(template_file + ":" + std::to_string(it->second.line) +
                                    ": variable servo_scale = '" + text + "' must be inertia or contact");
       }
   }

@@ -22,6 +22,17 @@ namespace fe2dem
 /// @p path relative to @p base_dir (a parameter file's directory), unless empty or absolute.
 std::string resolve_path(const std::string& base_dir, const std::string& path);
 
+/// One `variable NAME STYLE VALUE` command of a LIGGGHTS script.
+struct LiggghtsVariable
+{
+  std::string style, value;
+  int line = 0; ///< 1-based line number in the file
+};
+
+/// The `variable` commands of the LIGGGHTS script @p file by name, the first
+/// of each (comments after '#' stripped); empty if the file cannot be read.
+std::map<std::string, LiggghtsVariable> liggghts_variables(const std::string& file);
+
 /// @throws std::runtime_error naming @p prm, @p entry and @p file if @p file is not a regular file.
 void require_file(const std::string& file, const std::string& entry, const std::string& prm);
 

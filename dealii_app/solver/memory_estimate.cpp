@@ -1,4 +1,5 @@
 #include "memory_estimate.h"
+#include "rve_parameters.h" // liggghts_variables
 
 #include <algorithm>
 #include <fstream>
@@ -44,17 +45,12 @@ std::size_t rve_memory_estimate(std::size_t particles)
 
 std::size_t packing_particles(const std::string& vars_file)
 {
-  std::ifstream in(vars_file);
-  std::string line;
-  while (std::getline(in, line))
-  {
-    std::istringstream s(line);
-    std::string variable, name, style;
-    double value = 0.0;
-    if (s >> variable >> name >> style >> value && variable == "variable" && name == "rve_natoms")
-      return static_cast<std::size_t>(value);
-  }
-  return 0;
+  const auto variables = liggghts_variables(vars_file);
+  const auto it = variables.find("rve_natoms");
+  double value = 0.0;
+  if (it == variables.end() || !(std::istringstream(it->second.value) >> value))
+    return 0;
+  return static_cast<std::size_t>(value);
 }
 
 void check_rve_memory(MPI_Comm comm, std::size_t n_rve, std::size_t particles)

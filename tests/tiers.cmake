@@ -44,6 +44,8 @@ set(FE2DEM_LONG_RUNS
   macro_prepared_rve_holds_its_pressure macro_dynamic_rve_prepared_np1
   macro_dynamic_rve_prepared_np2 restart_dynamic_rve_prepared_kill_np2_resume_np1
   macro_dynamic_rve_triaxial_slow macro_dynamic_rve_shear_fast macro_dynamic_rve_shear_slow
+  # slow loading against the continuous reference (the column stays)
+  macro_slow_loading_triaxial_0.25 macro_slow_loading_triaxial_0.125
   # waves and beams of many steps (the 2D energy checks stay)
   macro_dynamics_wave_column_3d_one_point macro_dynamics_wave_column_2d
   macro_one_point_beam

@@ -21,7 +21,7 @@ std::unique_ptr<Analysis<dim>> make_analysis(MacroSystem<dim>& system, const Par
                                              const double omega_max, const double omega_relaxation,
                                              const dealii::ConditionalOStream& pcout)
 {
-  if (prm.dynamics.dynamic)
+  if (prm.dynamics.central_differences())
     return std::make_unique<CentralDifferenceAnalysis<dim>>(system, prm, omega_max, pcout);
   return std::make_unique<DynamicRelaxationAnalysis<dim>>(system, prm, omega_relaxation);
 }

@@ -3,12 +3,14 @@
  * How fe2dem advances its macro state over one load step, as a strategy the
  * solver holds (issue 36) instead of flags:
  *
- *  - DynamicRelaxationAnalysis (quasi-static, dynamic_relaxation_analysis.h):
- *    each step relaxed to rest by dynamic relaxation (M3)-(M9), with the
- *    multiple-time-stepping, predictor, ramp and boundary-extension policies;
- *  - CentralDifferenceAnalysis (explicit dynamics, central_difference_analysis.h):
- *    each step one output interval of physical time in central-difference
- *    steps, RVEs advancing the same physical time.
+ *  - DynamicRelaxationAnalysis (quasi-static by relaxed steps,
+ *    dynamic_relaxation_analysis.h): each step relaxed to rest by dynamic
+ *    relaxation (M3)-(M9), with the multiple-time-stepping, predictor, ramp
+ *    and boundary-extension policies;
+ *  - CentralDifferenceAnalysis (explicit dynamics, and quasi-static by slow
+ *    loading; central_difference_analysis.h): each step an interval of
+ *    physical time in central-difference steps, RVEs advancing the same
+ *    physical time.
  *
  * An analysis sees the discretised macro problem only through MacroSystem
  * (the solver implements it): the nodal fields, the internal and external
@@ -84,6 +86,8 @@ public:
   virtual LoadStepIndex load_step() const = 0;
   /// The displacement change over the last converged load step.
   virtual const dealii::Vector<double>& last_step_increment() const = 0;
+  /// The nominal strain of the fastest load step (LoadCase::largest_step_strain).
+  virtual double largest_step_strain() const = 0;
 };
 
 /// Advances the macro state over load steps.
@@ -118,8 +122,17 @@ public:
 };
 
 /**
- * The analysis of subsection Dynamics ('Analysis' = quasi-static: dynamic
- * relaxation; dynamic: central differences).
+ * Slow loading: the time of every load step, @p largest_step_strain (of the
+ * fastest step, MacroSystem::largest_step_strain) over 'Strain rate', with
+ * RVEs rounded up to whole RVE check intervals.
+ * @throws std::runtime_error if @p largest_step_strain is 0 (nothing sets the pace).
+ */
+double slow_loading_step_time(const Parameters& prm, double largest_step_strain);
+
+/**
+ * The analysis of subsection Dynamics ('Analysis' = dynamic, or quasi-static
+ * with 'Quasi-static scheme' = slow loading: central differences; relaxed
+ * steps: dynamic relaxation).
  * @param omega_max the mesh's highest frequency with the physical mass (the
  *                  dynamic analysis divides it by sqrt('Mass scaling')).
  * @param omega_relaxation omega_max of dynamic relaxation's step (M8).

@@ -8,7 +8,7 @@ namespace fe2dem::macro
 {
 CentralDifferenceIntegrator::CentralDifferenceIntegrator(const Dynamics& prm, const dealii::Vector<double>& mass,
                                                          const double omega_max)
-  : prm_(prm), mass_(mass)
+  : prm_(prm), mass_(mass), local_damping_(prm.slow_loading() ? prm.local_damping : 0.0)
 {
   const double xi = 0.5 * (prm.rayleigh_alpha / omega_max + prm.rayleigh_beta * omega_max);
   critical_step_ = 2.0 / omega_max * (std::sqrt(1.0 + xi * xi) - xi);
@@ -50,8 +50,11 @@ void CentralDifferenceIntegrator::correct(dealii::Vector<double>& v, dealii::Vec
   const double alpha = prm_.rayleigh_alpha, beta = prm_.rayleigh_beta;
   for (dealii::types::global_dof_index i = 0; i < v.size(); ++i)
   {
-    const double r = (f_ext[i] - f_int[i] - beta * (f_int[i] - f_int_previous[i]) / dt) / mass_[i];
     const double v_half = v[i];
+    double f = f_ext[i] - f_int[i] - beta * (f_int[i] - f_int_previous[i]) / dt;
+    if (local_damping_ > 0.0 && v_half != 0.0)
+      f -= local_damping_ * std::abs(f) * (v_half > 0.0 ? 1.0 : -1.0);
+    const double r = f / mass_[i];
     v[i] = (v_half + 0.5 * dt * r) / (1.0 + 0.5 * dt * alpha);
     a[i] = r - alpha * v[i];
   }

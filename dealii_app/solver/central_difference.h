@@ -7,7 +7,10 @@
  *   v^{n+1} = v^{n+1/2} + dt/2 a^{n+1},
  * with Rayleigh damping C = alpha M + beta K (the stiffness part as beta
  * times the rate of the internal forces, so that RVE materials need no
- * tangent; alpha implicit). Prescribed dofs follow their functions. The
+ * tangent; alpha implicit). Slow loading ('Quasi-static scheme') damps
+ * instead by Cundall's local damping: the unbalanced force f of a dof
+ * becomes f - lambda |f| sign(v^{n+1/2}), which vanishes with f at steady
+ * loading. Prescribed dofs follow their functions. The
  * critical step is (2/omega_max)(sqrt(1 + xi^2) - xi), xi = (alpha/omega_max
  * + beta omega_max)/2 the damping ratio of the highest mode (Belytschko,
  * Liu, Moran, Sec. 6.3).
@@ -57,6 +60,7 @@ public:
 private:
   const Dynamics& prm_;
   const dealii::Vector<double>& mass_;
+  double local_damping_; ///< lambda of slow loading, 0 in dynamics
   double critical_step_, time_step_;
 };
 } // namespace fe2dem::macro

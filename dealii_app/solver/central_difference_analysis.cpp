@@ -1,5 +1,6 @@
 #include "central_difference_analysis.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -13,17 +14,81 @@ template <int dim>
 CentralDifferenceAnalysis<dim>::CentralDifferenceAnalysis(MacroSystem<dim>& system, const Parameters& prm,
                                                           const double omega_max,
                                                           const ConditionalOStream& pcout)
-  : system_(system), prm_(prm),
-    integrator_(prm.dynamics, system.fields().mass, omega_max / std::sqrt(prm.dynamics.mass_scaling)),
-    f_int_previous_(system.fields().f_int.size())
+  : system_(system), prm_(prm), mass_factor_(numerical_mass_factor(prm, omega_max)),
+    integrator_(prm.dynamics, system.fields().mass,
+                omega_max / std::sqrt(prm.dynamics.dynamic ? prm.dynamics.mass_scaling : mass_factor_)),
+    total_time_(total_time(pcout)), f_int_previous_(system.fields().f_int.size())
 {
+  if (mass_factor_ != 1.0)
+    system_.fields().mass *= mass_factor_;
   if (prm_.material.type == MaterialParameters::Type::rve)
     choose_macro_time_step(pcout);
   const double dt = macro_time_step_ > 0.0 ? macro_time_step_ : integrator_.time_step();
-  pcout << "explicit dynamics: critical step " << integrator_.critical_step() << ", step " << dt;
+  pcout << (prm_.dynamics.dynamic ? "explicit dynamics" : "slow loading") << ": critical step "
+        << integrator_.critical_step() << ", step " << dt;
   if (macro_time_step_ > 0.0)
     pcout << " (" << dem_steps_per_macro_step_ << " DEM steps of " << prm_.rve.time_step << ")";
-  pcout << ", about " << std::ceil(prm_.loading.end_time / dt) << " steps" << std::endl;
+  pcout << ", about " << std::ceil(total_time_ / dt) << " steps";
+  if (mass_factor_ != 1.0)
+    pcout << ", numerical mass " << mass_factor_ << " x 'Density'";
+  pcout << std::endl;
+}
+
+// The smallest factor on the mass whose critical step (x 'Safety factor')
+// spans one RVE check interval; 1 without RVEs or if the mass is heavy
+// enough already. Slow loading has no Rayleigh damping, so the critical
+// step is 2 sqrt(s) / omega_max.
+template <int dim>
+double CentralDifferenceAnalysis<dim>::numerical_mass_factor(const Parameters& prm, const double omega_max)
+{
+  if (!prm.dynamics.slow_loading() || prm.material.type != MaterialParameters::Type::rve)
+    return 1.0;
+  const double check = prm.rve.check_interval * prm.rve.time_step;
+  const double s = std::pow(check * omega_max / (2.0 * prm.dynamics.safety_factor), 2);
+  return std::max(1.0, s * (1.0 + 1e-6)); // the margin keeps the one check above round-off
+}
+
+double slow_loading_step_time(const Parameters& prm, const double largest_step_strain)
+{
+  if (!(largest_step_strain > 0.0))
+    throw std::runtime_error(
+      "subsection Dynamics: 'Quasi-static scheme' = slow loading" +
+      std::string(prm.dynamics.scheme_auto ? " (the 'auto' choice with RVEs)" : "") +
+      " takes its pace from the prescribed displacements (each load step lasts its largest nominal "
+      "strain / 'Strain rate'), but no load step of this run moves a prescribed dof; prescribe the "
+      "motion (e.g. 'Type' = displacement in a 'Boundary condition N'), or set 'Quasi-static "
+      "scheme' = relaxed steps");
+  double step = largest_step_strain / prm.dynamics.strain_rate;
+  if (prm.material.type == MaterialParameters::Type::rve) // whole checks: rows on the macro steps
+  {
+    const double check = prm.rve.check_interval * prm.rve.time_step;
+    step = std::max(1.0, std::ceil(step / check * (1.0 - 1e-12))) * check;
+  }
+  return step;
+}
+
+template <int dim>
+double CentralDifferenceAnalysis<dim>::total_time(const ConditionalOStream& pcout) const
+{
+  if (prm_.dynamics.dynamic)
+    return prm_.loading.end_time;
+  const double strain = system_.largest_step_strain();
+  const double step = slow_loading_step_time(prm_, strain);
+  pcout << "slow loading: largest nominal strain of a load step " << strain << ", "
+        << step << " time units per load step at 'Strain rate' = " << prm_.dynamics.strain_rate << std::endl;
+  return step * system_.load_step().steps_in_run;
+}
+
+// Stage s starts after the steps of the stages before it; a single stage
+// spans exactly the total time (so dynamics keeps t = fraction x 'End time').
+template <int dim>
+std::pair<double, double> CentralDifferenceAnalysis<dim>::stage_time() const
+{
+  const LoadStepIndex i = system_.load_step();
+  if (i.steps_in_stage == i.steps_in_run)
+    return {0.0, total_time_};
+  const double before = static_cast<double>(i.step - i.step_in_stage);
+  return {total_time_ * before / i.steps_in_run, total_time_ * i.steps_in_stage / i.steps_in_run};
 }
 
 // With RVEs every macro step is the same whole number of DEM steps, so that
@@ -40,8 +105,7 @@ void CentralDifferenceAnalysis<dim>::choose_macro_time_step(const ConditionalOSt
   // An output interval of a whole number K of checks is split into equal
   // macro steps (d checks, d the largest divisor of K allowed), so that
   // the rows fall on the requested times; otherwise rows fall on the grid.
-  const double interval_checks =
-    prm_.loading.end_time / system_.load_step().steps_in_run / (every * dt_dem);
+  const double interval_checks = total_time_ / system_.load_step().steps_in_run / (every * dt_dem);
   const long K = std::lround(interval_checks);
   long checks = most_checks;
   if (K >= 1 && std::abs(interval_checks - K) <= 1e-9 * K)
@@ -102,11 +166,11 @@ std::pair<CentralDifferenceIntegrator::Values, CentralDifferenceIntegrator::Valu
 CentralDifferenceAnalysis<dim>::prescribed_motion(const double t, const double dt,
                                                   const CentralDifferenceIntegrator::Values& now) const
 {
-  const double T = prm_.loading.end_time;
-  const auto at = [&](double s) { return system_.constraints(s / T); };
+  const auto [t0, T] = stage_time();
+  const auto at = [&, t0 = t0, T = T](double s) { return system_.constraints((s - t0) / T); };
   const auto later = at(t + dt);
-  const auto earlier = t - dt >= 0.0 ? at(t - dt) : now;
-  const double back = t - dt >= 0.0 ? dt : 0.0;
+  const auto earlier = t - dt >= t0 ? at(t - dt) : now;
+  const double back = t - dt >= t0 ? dt : 0.0;
   CentralDifferenceIntegrator::Values v, a;
   for (const auto& [i, u] : now)
   {
@@ -119,14 +183,16 @@ CentralDifferenceAnalysis<dim>::prescribed_motion(const double t, const double d
 // One output interval, from time_ to the end time of the load step: in
 // equal steps no longer than the integrator's step, or with RVEs in whole
 // macro steps on the grid j * macro_time_step_ (the interval then ends on
-// the grid time nearest to its end, at least one step on).
+// the grid time nearest to its end, at least one step on). In a stage after
+// the first, t0 is the stage's start.
 template <int dim>
 typename Analysis<dim>::StepResult CentralDifferenceAnalysis<dim>::solve_step(double /*begin*/,
                                                                              const double end)
 {
   MacroFields& x = system_.fields();
-  const double T = prm_.loading.end_time, t_begin = time_;
-  double t_end = end * T;
+  const auto [t0, T] = stage_time();
+  const double t_begin = time_;
+  double t_end = t0 + end * T;
   unsigned int n = 0;
   long j_begin = 0; // grid index of t_begin (RVEs)
   if (macro_time_step_ > 0.0)
@@ -146,7 +212,7 @@ typename Analysis<dim>::StepResult CentralDifferenceAnalysis<dim>::solve_step(do
     const double t = macro_time_step_ > 0.0 ? static_cast<double>(j_begin + k) * macro_time_step_
                      : k == n             ? t_end
                                           : t_begin + (t_end - t_begin) * k / n;
-    fraction = t / T;
+    fraction = (t - t0) / T;
     x.boundary_values = system_.constraints(fraction);
     integrator_.predict(x.displacement, x.velocity, x.acceleration, dt, x.boundary_values);
     f_int_previous_ = x.f_int;

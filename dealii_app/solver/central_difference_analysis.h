@@ -1,10 +1,21 @@
 /**
  * @file central_difference_analysis.h
- * Explicit dynamics (analysis.h, 'Analysis' = dynamic): each load step is
- * one output interval of physical time, integrated by central differences
- * (central_difference.h) in equal steps no longer than the critical step;
- * with RVE materials every macro step is the same whole number of RVE
+ * Central differences over load steps (analysis.h), in two uses:
+ *  - explicit dynamics ('Analysis' = dynamic): the physical mass (times
+ *    'Mass scaling'), Rayleigh damping; the load steps are output intervals
+ *    of the physical time 0 ... 'End time' that the functions see;
+ *  - slow loading ('Quasi-static scheme'): the quasi-static response as the
+ *    limit of loading at a constant rate. Every load step lasts the same
+ *    time, its largest nominal strain over 'Strain rate'; the mass is
+ *    numerical (the smallest that lets a macro step span one RVE check
+ *    interval; larger would only slow the macro waves) and local damping
+ *    takes the vibration out without a drag on the stresses. The load
+ *    steps keep the pseudo-time of a quasi-static run.
+ * Each load step is integrated in equal steps no longer than the critical
+ * step; with RVE materials every macro step is the same whole number of RVE
  * checks of DEM steps, so that each RVE advances exactly its physical time.
+ * Stages (e.g. the isotropic stage of the compression tests) follow one
+ * another in time, each step of either lasting the same time.
  */
 #pragma once
 
@@ -22,7 +33,8 @@ class CentralDifferenceAnalysis : public Analysis<dim>
 public:
   /**
    * @param omega_max upper bound of the mesh's highest frequency with the physical mass.
-   * @throws std::runtime_error if an RVE material's check interval is longer than the macro step.
+   * @throws std::runtime_error if an RVE material's check interval is longer than the macro step,
+   *         or if slow loading finds no prescribed motion to take its pace from.
    */
   CentralDifferenceAnalysis(MacroSystem<dim>& system, const Parameters& prm, double omega_max,
                             const dealii::ConditionalOStream& pcout);
@@ -33,15 +45,26 @@ public:
   typename Analysis<dim>::StepResult solve_step(double begin, double end) override;
   std::string why_steps_are_not_cut() const override
   {
-    return "In dynamics a load step is not cut (its time steps would repeat)";
+    return prm_.dynamics.dynamic ? "In dynamics a load step is not cut (its time steps would repeat)"
+                                 : "In slow loading a load step is not cut (its time steps would repeat)";
   }
-  std::optional<double> time() const override { return time_; }
+  /// Dynamics: the physical time; slow loading: none (its rows keep the pseudo-time).
+  std::optional<double> time() const override
+  {
+    return prm_.dynamics.dynamic ? std::optional<double>(time_) : std::nullopt;
+  }
   const char* iteration_name() const override { return "time steps"; }
   /// {t, v, a, f_int} (the checkpoint layout of explicit dynamics).
   std::vector<double> pack_state() const override;
   void unpack_state(const std::vector<double>& state, const std::string& file) override;
 
 private:
+  /// Slow loading: the factor of the numerical mass (1 in dynamics: 'Mass scaling' is in the mass).
+  static double numerical_mass_factor(const Parameters& prm, double omega_max);
+  /// The physical time of all load steps: 'End time' in dynamics, steps x step time in slow loading.
+  double total_time(const dealii::ConditionalOStream& pcout) const;
+  /// The current stage's start and length in time.
+  std::pair<double, double> stage_time() const;
   /// The macro step with RVEs: whole RVE checks (see the constructor).
   void choose_macro_time_step(const dealii::ConditionalOStream& pcout);
   /// Velocity and acceleration of the prescribed dofs at time @p t (differences over @p dt),
@@ -51,7 +74,9 @@ private:
 
   MacroSystem<dim>& system_;
   const Parameters& prm_;
+  const double mass_factor_; ///< numerical_mass_factor()
   CentralDifferenceIntegrator integrator_;
+  const double total_time_;  ///< total_time()
   dealii::Vector<double> f_int_previous_;
   double time_ = 0.0; ///< the physical time of the state
   /// with RVEs: DEM steps per macro step and that step (0: no RVEs)

@@ -104,6 +104,7 @@ private:
   const dealii::DoFHandler<dim>& dof_handler() const override { return dof_handler_; }
   LoadStepIndex load_step() const override;
   const dealii::Vector<double>& last_step_increment() const override { return step_increment_; }
+  double largest_step_strain() const override { return load_case_->largest_step_strain(); }
 
   void assemble_one_point_force();
   void make_one_point_elements();

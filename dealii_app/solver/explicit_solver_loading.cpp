@@ -23,6 +23,8 @@ void ExplicitSolver<dim>::run()
   t_start_ = MPI_Wtime();
   make_grid();
   setup_system();
+  if (prm_.dynamics.slow_loading()) // refused before the RVEs are made
+    slow_loading_step_time(prm_, largest_step_strain());
   assemble_lumped_mass();
   prepare_output_directory();
   stage_ = load_case_->steps_in_stage(1) > 0 ? 1 : 2;

@@ -5,7 +5,10 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/mapping_q1.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace fe2dem::macro
@@ -48,6 +51,33 @@ template <int dim>
 double LoadCase<dim>::axial_strain(unsigned int stage, const Vector<double>& u) const
 {
   return stage == 2 ? (u_top_ic_ - mean_top_displacement(u)) / h_ic_ : 0.0;
+}
+
+// Over the steps of stage 2 (h_ic = h0 before stage 1 ends: a nominal measure).
+template <int dim>
+double LoadCase<dim>::largest_step_strain() const
+{
+  std::array<double, dim> lo, hi;
+  lo.fill(std::numeric_limits<double>::max());
+  hi.fill(std::numeric_limits<double>::lowest());
+  for (const Point<dim>& x : dofs_.position)
+    for (unsigned int d = 0; d < dim; ++d)
+      lo[d] = std::min(lo[d], x[d]), hi[d] = std::max(hi[d], x[d]);
+  const unsigned int n = steps_in_stage(2);
+  double largest = 0.0;
+  Constraints before = constraints(2, 0.0);
+  for (unsigned int k = 1; k <= n; ++k)
+  {
+    const Constraints after = constraints(2, static_cast<double>(k) / n);
+    for (const auto& [i, u] : after)
+    {
+      const auto b = before.find(i);
+      const unsigned int c = dofs_.component[i];
+      largest = std::max(largest, std::abs(u - (b == before.end() ? 0.0 : b->second)) / (hi[c] - lo[c]));
+    }
+    before = after;
+  }
+  return largest;
 }
 
 template <int dim>

@@ -90,6 +90,13 @@ public:
   double axial_strain(unsigned int stage, const dealii::Vector<double>& u) const;
   /// Vertical internal force summed over the top edge.
   double top_reaction(const dealii::Vector<double>& f_int) const;
+  /**
+   * The nominal strain of the fastest load step of stage 2: the largest
+   * change of a prescribed displacement over one step, over the specimen's
+   * extent along its component (the pace of 'Quasi-static scheme' = slow
+   * loading). 0 if stage 2 prescribes no motion (e.g. loads by pressure only).
+   */
+  double largest_step_strain() const;
 
   /// What a checkpoint keeps: top displacement and height after stage 1.
   struct Reference

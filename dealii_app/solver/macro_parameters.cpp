@@ -153,22 +153,22 @@ void MaterialParameters::parse_parameters(dealii::ParameterHandler& prm)
                                             {"Stability modulus", stability_modulus}});
 }
 
-// In dynamics every RVE advances in time with the macro step (timed solves):
-// from where it is, every step, with no step limit of its own.
-void MaterialParameters::check_for_dynamics() const
+// In dynamics and slow loading every RVE advances in time with the macro
+// step (timed solves): from where it is, every step, with no step limit of its own.
+void MaterialParameters::check_for_dynamics(const std::string& analysis) const
 {
-  const std::string why = " ('Analysis' = dynamic of subsection Dynamics: each RVE advances the "
-                          "physical time of every macro step from where it is)";
+  const std::string why = " (" + analysis + ": each RVE advances the physical time of every macro "
+                          "step from where it is)";
   if (history != HistoryMode::continuous)
     throw std::runtime_error("subsection Material: 'History' = committed cannot be used in "
-                             "dynamics; set 'History' = continuous" + why);
+                             "dynamics or slow loading; set 'History' = continuous" + why);
   if (skip_tolerance > 0.0)
     throw std::runtime_error("subsection Material: 'Skip tolerance' = " + std::to_string(skip_tolerance) +
                              " would leave RVEs behind in time; set it to 0" + why);
   if (steps_per_iteration > 0)
     throw std::runtime_error("subsection Material: 'DEM steps per iteration' = " +
                              std::to_string(steps_per_iteration) +
-                             " is for dynamic relaxation; set it to 0: in dynamics the DEM steps "
+                             " is for dynamic relaxation; set it to 0: here the DEM steps "
                              "per macro step follow from the two time steps" + why);
 }
 
@@ -600,6 +600,7 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
   elements.parse_parameters(prm);
   relaxation.parse_parameters(prm);
   dynamics.parse_parameters(prm);
+  dynamics.resolve_scheme(material.type == MaterialParameters::Type::rve);
   loading.parse_parameters(prm, geometry.dimension);
   conditions = BoundaryCondition::parse_all(prm, geometry.dimension);
   if (loading.boundary == Loading::Boundary::conditions && conditions.empty())
@@ -614,13 +615,16 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
                              "subsection Loading (the biaxial, triaxial and affine presets are "
                              "quasi-static); set the boundary conditions as subsections 'Boundary "
                              "condition N' with functions of the time t");
-  if (dynamics.dynamic && material.type == MaterialParameters::Type::rve)
-    material.check_for_dynamics();
-  if (!dynamics.dynamic && elements.one_point && elements.hourglass == FiniteElements::Hourglass::viscous)
+  if (dynamics.central_differences() && material.type == MaterialParameters::Type::rve)
+    material.check_for_dynamics(dynamics.dynamic ? "'Analysis' = dynamic of subsection Dynamics"
+                                : std::string("'Quasi-static scheme' = slow loading of subsection Dynamics") +
+                                    (dynamics.scheme_auto ? " (its 'auto' with RVEs; 'relaxed steps' is "
+                                                            "[LBS]'s dynamic relaxation)" : ""));
+  if (dynamics.relaxed_steps() && elements.one_point && elements.hourglass == FiniteElements::Hourglass::viscous)
     throw std::runtime_error("subsection Finite elements: 'Hourglass control' = viscous acts on the "
                              "hourglass velocities, which vanish as dynamic relaxation converges, so "
                              "in a quasi-static run it controls nothing; use 'Hourglass control' = "
-                             "stiffness, or 'Analysis' = dynamic in subsection Dynamics");
+                             "stiffness, or 'Quasi-static scheme' = slow loading in subsection Dynamics");
   if (material.initial_pressure > 0.0 && loading.boundary != Loading::Boundary::conditions &&
       loading.isotropic_steps > 0)
     throw std::runtime_error("subsection Material: 'Initial pressure' = " +
@@ -640,9 +644,9 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
       "subsection RVE: 'Solve drive' = continuous is a setting of fe2dem-rve's stepped and table "
       "paths; fe2dem's dynamic relaxation drives the RVEs at the pace of its iterations (measured "
       "8-22 % below the continuous limit on the one-element triaxial test, "
-      "benchmarks/rve_continuous/README.md) and explicit dynamics uses timed solves. Use 'Solve "
-      "drive' = servo iterations; for the quasi-static response in 3D, 'Analysis' = dynamic at a "
-      "low rate with 'Rayleigh beta' (README, 'One quasi-static answer')");
+      "benchmarks/rve_continuous/README.md), and slow loading and explicit dynamics use timed "
+      "solves. Use 'Solve drive' = servo iterations; the quasi-static response at a constant rate "
+      "is 'Quasi-static scheme' = slow loading (README, 'One quasi-static answer')");
   if (material.type == MaterialParameters::Type::rve)
   {
     rve.check_files(file);

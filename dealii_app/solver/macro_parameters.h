@@ -50,8 +50,11 @@ struct MaterialParameters
   double initial_pressure_tolerance;    ///< RVE: relative tolerance of its normal stresses
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm);
-  /// @throws std::runtime_error naming the entry if RVEs cannot run in explicit dynamics so.
-  void check_for_dynamics() const;
+  /**
+   * @throws std::runtime_error naming the entry if RVEs cannot run in time (explicit
+   * dynamics, slow loading) so; @p analysis names the setting that asks for it.
+   */
+  void check_for_dynamics(const std::string& analysis) const;
 };
 
 /**
@@ -106,19 +109,39 @@ struct DynamicRelaxation
 };
 
 /**
- * subsection Dynamics: quasi-static loading by dynamic relaxation, or
- * explicit dynamics (central differences, central_difference.h).
+ * subsection Dynamics: the analysis. Quasi-static by slow loading (explicit
+ * dynamics at a low strain rate with a numerical mass and local damping:
+ * the limit DEM calls quasi-static) or by relaxed steps (dynamic relaxation
+ * of every load step, [LBS]/[LSYF]), or explicit dynamics (central
+ * differences, central_difference.h).
  */
 struct Dynamics
 {
-  bool dynamic;          ///< explicit dynamics instead of dynamic relaxation
+  /// How a quasi-static analysis reaches each load step.
+  enum class Scheme
+  {
+    relaxed_steps, ///< dynamic relaxation to rest at every step ([LBS] (M3)-(M9))
+    slow_loading   ///< central differences at 'Strain rate', mass and damping numerical
+  };
+  bool dynamic;          ///< explicit dynamics instead of a quasi-static analysis
+  Scheme scheme;         ///< quasi-static: 'Quasi-static scheme', 'auto' resolved by resolve_scheme()
+  bool scheme_auto;      ///< 'Quasi-static scheme' = auto
+  double strain_rate;    ///< slow loading: nominal strain rate of the fastest load step [1/time]
+  double local_damping;  ///< slow loading: Cundall's local damping of the nodal forces, in [0, 1)
   double time_step;      ///< fixed step [time]; 0: safety_factor x the critical step
   double safety_factor;  ///< of the critical step, in (0, 1]
   double rayleigh_alpha; ///< mass-proportional damping C = alpha M + beta K [1/time]
   double rayleigh_beta;  ///< stiffness-proportional damping [time]
   double mass_scaling;   ///< density factor >= 1 of the mass matrix (waves slower by its square root)
-  /// The factor of the density in the mass matrix: 'Mass scaling' in dynamics, 1 for dynamic relaxation.
+  bool slow_loading() const { return !dynamic && scheme == Scheme::slow_loading; }
+  bool relaxed_steps() const { return !dynamic && scheme == Scheme::relaxed_steps; }
+  /// Central differences advance the state (explicit dynamics or slow loading).
+  bool central_differences() const { return dynamic || scheme == Scheme::slow_loading; }
+  /// The factor of the density in the mass matrix: 'Mass scaling' in dynamics, 1 otherwise
+  /// (slow loading scales its numerical mass itself, central_difference_analysis.h).
   double mass_factor() const { return dynamic ? mass_scaling : 1.0; }
+  /// 'auto': slow loading for RVE materials (path-dependent), relaxed steps otherwise.
+  void resolve_scheme(bool rve_material);
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm);
 };

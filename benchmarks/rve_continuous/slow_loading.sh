@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# fe2dem's quasi-static default, slow loading, against the continuous limit
+# (issue 35): the one-element triaxial test of tests/slow_loading/triaxial_3d.prm
+# (RVE prepared at 100 kPa, 100 kPa on two lateral faces, the top pushed
+# down along y) at 'Strain rate' 0.25 and 0.125 /s, against fe2dem-rve's
+# continuous drive of the same RVE (tests/dynamics_rve/triaxial_continuous_rve.prm
+# at 0.0651 /s; also at 0.125 /s for lsyf_1000, the reference's own spread).
+#   small_3d    to 2 % in 8 steps; the reference and the relaxed-steps runs
+#               of macro_steps.sh (4, 8, 16 steps) are compared too
+#   lsyf_1000   to 5 % in 20 steps
+# Tables by curves.py --prepared into results/slow_loading_PACKING.txt.
+#   slow_loading.sh BUILD [small_3d|lsyf_1000|all]   (default all; about
+#   5 min for small_3d, 40 min of CPU for lsyf_1000 on the 2-core machine)
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+[[ $# -ge 1 && $# -le 2 ]] || { sed -n '2,13p' "$0"; exit 2; }
+build="$(cd "$1" && pwd)"
+what="${2:-all}"
+out="$here/results/slow_loading"
+rebase() { sed "s#\.\./\.\./rve_templates#$root/rve_templates#" "$@"; }
+
+# reference DIR RATE PACKING STEPS STRAIN: fe2dem-rve's continuous drive
+reference() {
+  local dir=$1 rate=$2 packing=$3 steps=$4 strain=$5
+  [[ -f "$dir/rve.csv" ]] && return
+  mkdir -p "$dir"
+  rebase "$root/tests/dynamics_rve/triaxial_continuous_rve.prm" | sed "s#RATE#$rate#; \
+    s#packings/small_3d#packings/$packing#; s#^\( *set Loading steps *=\).*#\1 $steps#; \
+    s#^\( *set Axial strain *=\).*#\1 $strain#" > "$dir/case.prm"
+  local t0=$SECONDS
+  "$build/dealii_app/rve_driver/fe2dem-rve" "$dir/case.prm" --output-directory "$dir" > "$dir/run.log"
+  echo "reference $dir: $((SECONDS - t0)) s"
+}
+# slow DIR RATE PACKING STEPS STRAIN: fe2dem, one element, the default scheme
+slow() {
+  local dir=$1 rate=$2 packing=$3 steps=$4 strain=$5
+  [[ -f "$dir/out/summary.csv" ]] && return
+  mkdir -p "$dir"
+  rebase "$root/tests/slow_loading/triaxial_3d.prm" | sed "s#RATE#$rate#; \
+    s#packings/small_3d#packings/$packing#; s#^\( *set Load steps *=\).*#\1 $steps#; \
+    s#-2e-4 \* t#-$(/usr/bin/python3 -c "print($strain * 0.01)") * t#" > "$dir/macro.prm"
+  local t0=$SECONDS
+  (cd "$dir" && "$build/dealii_app/solver/fe2dem" macro.prm > log)
+  echo "slow loading $dir: $((SECONDS - t0)) s"
+}
+mkdir -p "$out"
+if [[ "$what" == small_3d || "$what" == all ]]; then
+  ref="$here/results/macro_steps/continuous_0.065/rve.csv"
+  [[ -f "$ref" ]] || "$here/macro_steps.sh" "$build" > /dev/null
+  for rate in 0.25 0.125; do slow "$out/small_3d_$rate" $rate small_3d 8 0.02; done
+  { echo "# small_3d: slow loading at 0.25 and 0.125 /s, then relaxed steps in 4, 8, 16 steps (macro_steps.sh)"
+    /usr/bin/python3 "$here/curves.py" --prepared 1e5 compare "$ref" "$out"/small_3d_{0.25,0.125}/out/summary.csv \
+      "$here"/results/macro_steps/steps_{4,8,16}/summary.csv; } > "$here/results/slow_loading_small_3d.txt"
+  cat "$here/results/slow_loading_small_3d.txt"
+fi
+if [[ "$what" == lsyf_1000 || "$what" == all ]]; then
+  reference "$out/lsyf_1000_continuous_0.0651" 0.0651 lsyf_1000 20 0.05 &
+  reference "$out/lsyf_1000_continuous_0.125" 0.125 lsyf_1000 20 0.05
+  wait
+  slow "$out/lsyf_1000_0.25" 0.25 lsyf_1000 20 0.05 &
+  slow "$out/lsyf_1000_0.125" 0.125 lsyf_1000 20 0.05
+  wait
+  { echo "# lsyf_1000: slow loading at 0.25 and 0.125 /s, then the continuous drive at 0.125 /s (the reference's own spread)"
+    /usr/bin/python3 "$here/curves.py" --prepared 1e5 compare "$out/lsyf_1000_continuous_0.0651/rve.csv" \
+      "$out"/lsyf_1000_{0.25,0.125}/out/summary.csv "$out/lsyf_1000_continuous_0.125/rve.csv"; } \
+    > "$here/results/slow_loading_lsyf_1000.txt"
+  cat "$here/results/slow_loading_lsyf_1000.txt"
+fi

@@ -42,6 +42,7 @@ slow() {
     s#-2e-4 \* t#-$(/usr/bin/python3 -c "print($strain * 0.01)") * t#" > "$dir/macro.prm"
   local t0=$SECONDS
   (cd "$dir" && "$build/dealii_app/solver/fe2dem" macro.prm > log)
+  rm -rf "$dir/out/checkpoints" "$dir"/out/*.vtu "$dir"/out/*.pvd # kept: summary, history, energy
   echo "slow loading $dir: $((SECONDS - t0)) s"
 }
 mkdir -p "$out"

@@ -5,8 +5,13 @@
 
 #include <hdf5.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -30,6 +35,35 @@ void check(herr_t status, const std::string& what, const std::string& file)
 {
   if (status < 0)
     throw std::runtime_error("checkpoint '" + file + "': " + what + " failed");
+}
+
+// @p size bytes into @p file, every call checked; on failure the file is
+// removed and the error names it and errno (e.g. a full disk).
+void write_file(const std::string& file, const char* data, const std::size_t size)
+{
+  const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  bool ok = fd >= 0;
+  int error = ok ? 0 : errno;
+  for (std::size_t done = 0; ok && done < size;)
+  {
+    const ssize_t n = ::write(fd, data + done, size - done);
+    if (n < 0 && errno == EINTR)
+      continue;
+    ok = n > 0;
+    error = ok ? 0 : (n < 0 ? errno : ENOSPC);
+    done += ok ? static_cast<std::size_t>(n) : 0;
+  }
+  if (ok && ::fsync(fd) != 0)
+    ok = false, error = errno;
+  if (fd >= 0 && ::close(fd) != 0 && ok)
+    ok = false, error = errno;
+  if (!ok)
+  {
+    std::remove(file.c_str());
+    throw std::runtime_error("cannot write checkpoint file '" + file + "' (" + std::strerror(error) +
+                             "): the newest complete checkpoint is kept; free space in 'Output "
+                             "directory' (or give another), then continue with --resume");
+  }
 }
 
 template <class T>
@@ -113,14 +147,22 @@ std::string checkpoint_path(const std::string& directory, int step)
   return s.str();
 }
 
+// The checkpoint is built in memory (HDF5's core driver) and written with
+// checked POSIX calls: a full or failing disk is then an error naming the
+// file and errno, with the partial file removed, where HDF5 writing to the
+// disk itself failed at its close and crashed at MPI_Finalize (issue 39).
 void write_checkpoint(const std::string& file, const CheckpointData& d,
                       const std::vector<std::vector<char>>& rve_states, const HistoryWriter* history)
 {
   const std::string tmp = file + ".tmp";
   std::remove(tmp.c_str()); // left by a run killed while writing
-  hid_t h = H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  hid_t in_memory = H5Pcreate(H5P_FILE_ACCESS);
+  H5Pset_fapl_core(in_memory, 1 << 20, 0); // no backing store: nothing reaches the disk here
+  hid_t h = H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, in_memory);
+  H5Pclose(in_memory);
   if (h < 0)
-    throw std::runtime_error("cannot create checkpoint '" + tmp + "'");
+    throw std::runtime_error("cannot create checkpoint '" + tmp + "' in memory");
+  std::vector<char> image;
   try
   {
     write_attribute(h, "format", H5T_NATIVE_INT, format_version, tmp);
@@ -149,16 +191,30 @@ void write_checkpoint(const std::string& file, const CheckpointData& d,
       history->copy_to(g);
       H5Gclose(g);
     }
+    check(H5Fflush(h, H5F_SCOPE_GLOBAL), "flushing", tmp);
+    const ssize_t size = H5Fget_file_image(h, nullptr, 0);
+    check(size < 0 ? -1 : 0, "taking the image", tmp);
+    image.resize(static_cast<std::size_t>(size));
+    check(H5Fget_file_image(h, image.data(), image.size()) < 0 ? -1 : 0, "taking the image", tmp);
   }
   catch (...)
   {
     H5Fclose(h);
-    std::remove(tmp.c_str());
     throw;
   }
   check(H5Fclose(h), "closing", tmp);
   // The fingerprint first: a checkpoint with the final name has one.
-  std::ofstream(file + ".fnv") << file_hash(tmp) << " " << std::filesystem::file_size(tmp) << "\n";
+  const std::string fingerprint = bytes_hash(image.data(), image.size()) + " " + std::to_string(image.size()) + "\n";
+  write_file(tmp, image.data(), image.size());
+  try
+  {
+    write_file(file + ".fnv", fingerprint.data(), fingerprint.size());
+  }
+  catch (...)
+  {
+    std::remove(tmp.c_str());
+    throw;
+  }
   std::filesystem::rename(tmp, file); // atomic: a checkpoint with the final name is complete
 }
 

@@ -86,25 +86,29 @@ void create(hid_t file, const char* name, hid_t type, std::size_t n_ip, std::siz
   H5Sclose(space);
 }
 
-/// Writes row @p s of dataset @p name (data: one row).
-void append_row(hid_t file, const char* name, hid_t type, std::size_t s, const void* data)
+/// Writes row @p s of dataset @p name (data: one row); negative if HDF5 failed.
+herr_t append_row(hid_t file, const char* name, hid_t type, std::size_t s, const void* data)
 {
   hid_t set = H5Dopen2(file, name, H5P_DEFAULT);
+  if (set < 0)
+    return -1;
   hid_t space = H5Dget_space(set);
   const int rank = H5Sget_simple_extent_ndims(space);
   hsize_t dims[3];
   H5Sget_simple_extent_dims(space, dims, nullptr);
   H5Sclose(space);
   dims[0] = s + 1;
-  H5Dset_extent(set, dims);
+  herr_t status = H5Dset_extent(set, dims);
   space = H5Dget_space(set);
   hsize_t start[3] = {s, 0, 0}, count[3] = {1, dims[1], rank > 2 ? dims[2] : 1};
   H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, count, nullptr);
   hid_t mem = H5Screate_simple(rank, count, nullptr);
-  H5Dwrite(set, type, mem, space, H5P_DEFAULT, data);
+  if (status >= 0)
+    status = H5Dwrite(set, type, mem, space, H5P_DEFAULT, data);
   H5Sclose(mem);
   H5Sclose(space);
   H5Dclose(set);
+  return status;
 }
 } // namespace
 
@@ -220,15 +224,39 @@ void HistoryWriter::create_once(const char* name, long long type, std::size_t wi
     create(file_, name, type, n_ip_, width, unit, description);
 }
 
+// HDF5 (1.10) fed a full disk fails at its close and then crashes at
+// MPI_Finalize, so the space an append may take is checked before it: a new
+// chunk of 16 rows of every dataset and a margin for the metadata. (Another
+// process filling the disk in between still ends in HDF5's own failure.)
+void HistoryWriter::require_space(const std::size_t bytes) const
+{
+  const std::filesystem::path file(name_);
+  std::error_code error;
+  const auto space = std::filesystem::space(file.has_parent_path() ? file.parent_path() : ".", error);
+  if (!error && space.available < bytes)
+    throw std::runtime_error("cannot write '" + name_ + "' (No space left on device: " +
+                             std::to_string(space.available) + " bytes free, the next row may take " +
+                             std::to_string(bytes) + "): it holds the rows before; free space in "
+                             "'Output directory' (or give another), then continue with --resume");
+}
+
+void HistoryWriter::check(const long long status, const char* what) const
+{
+  if (status < 0)
+    throw std::runtime_error("cannot write '" + name_ + "' (HDF5 failed " + what + "): check the free space "
+                             "and permissions of 'Output directory'");
+}
+
 template <int dim>
 void HistoryWriter::append(int step, double axial_strain, const std::vector<IpRecord<dim>>& ips)
 {
   constexpr std::size_t n = dim * dim;
-  append_row(file_, "step", H5T_NATIVE_INT, n_steps_, &step);
-  append_row(file_, "axial_strain", H5T_NATIVE_DOUBLE, n_steps_, &axial_strain);
   // Each IP's values as one row of doubles: F, P, sigma, then the packed
   // statistics (rve_statistics.h order; counts are exact in doubles).
   constexpr std::size_t stride = 3 * n + RveStatistics<dim>::packed_size();
+  require_space(16 * (stride * n_ip_ + 2) * sizeof(double) + (256u << 10));
+  check(append_row(file_, "step", H5T_NATIVE_INT, n_steps_, &step), "appending 'step'");
+  check(append_row(file_, "axial_strain", H5T_NATIVE_DOUBLE, n_steps_, &axial_strain), "appending 'axial_strain'");
   std::vector<double> rows(stride * n_ip_);
   for (std::size_t p = 0; p < n_ip_; ++p)
   {
@@ -249,7 +277,7 @@ void HistoryWriter::append(int step, double axial_strain, const std::vector<IpRe
         v[w * p + k] = static_cast<T>(rows[stride * p + offset + k]);
     const hid_t type = std::is_same_v<T, long> ? H5T_NATIVE_LONG : H5T_NATIVE_DOUBLE;
     create_once(name, type, width, unit, description);
-    append_row(file_, name, type, n_steps_, v.data());
+    check(append_row(file_, name, type, n_steps_, v.data()), "appending a row");
     offset += w;
   };
   const char* stress_unit = RveStatistics<dim>::stress_unit;
@@ -268,7 +296,7 @@ void HistoryWriter::append(int step, double axial_strain, const std::vector<IpRe
       columns(name, unit, description, std::is_same_v<T, double> ? 0 : n, 0.0);
   });
   ++n_steps_;
-  H5Fflush(file_, H5F_SCOPE_GLOBAL);
+  check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flushing");
 }
 
 template void HistoryWriter::append(int, double, const std::vector<IpRecord<2>>&);

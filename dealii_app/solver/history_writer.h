@@ -52,6 +52,7 @@ public:
   HistoryWriter& operator=(const HistoryWriter&) = delete;
 
   /// Appends one converged load step; flushed to disk before returning.
+  /// @throws std::runtime_error naming the file if the disk lacks the space for the row or a write fails.
   template <int dim>
   void append(int step, double axial_strain, const std::vector<IpRecord<dim>>& ips);
   /// Copies every dataset and the root attributes, as written so far, into HDF5 group @p destination.
@@ -66,6 +67,10 @@ public:
   void note_resume();
 
 private:
+  /// Throws (naming the file, the free and the needed bytes) unless @p bytes are free on its file system.
+  void require_space(std::size_t bytes) const;
+  /// Throws naming the file if @p status (of HDF5's @p what) is negative.
+  void check(long long status, const char* what) const;
   /// Creates extendible dataset @p name unless it exists (the first append creates them).
   void create_once(const char* name, long long type, std::size_t width, const char* unit,
                    const char* description);

@@ -3,6 +3,7 @@
 #include <deal.II/base/quadrature_lib.h>
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -36,6 +37,27 @@ ConditionsLoadCase<dim>::ConditionsLoadCase(const DofMap<dim>& dofs, double h0, 
   }
 }
 
+// A NaN or infinity from a function would surface later as an inverted
+// mesh or a failed RVE; it is named here, where it arises.
+template <int dim>
+double ConditionsLoadCase<dim>::finite(const Parsed& c, const double v, const Point<dim>& X, const double t,
+                                       const unsigned int k)
+{
+  if (std::isfinite(v))
+    return v;
+  std::ostringstream msg;
+  msg << "subsection Boundary condition " << c.condition.number << " ('Boundary' = "
+      << c.condition.boundary_text << "): 'Function' = '" << c.condition.function << "' gives "
+      << (std::isnan(v) ? "NaN" : v > 0.0 ? "infinity" : "-infinity");
+  if (c.function->n_components > 1)
+    msg << " in its expression " << k + 1;
+  msg << " at t = " << t << ", x = (";
+  for (unsigned int d = 0; d < dim; ++d)
+    msg << (d ? ", " : "") << X[d];
+  msg << "); give a function that is finite for every t of the run (0 to 'End time') on that boundary";
+  throw std::runtime_error(msg.str());
+}
+
 template <int dim>
 double ConditionsLoadCase<dim>::value(const Parsed& c, const Point<dim>& X, double t, unsigned int k)
 {
@@ -44,7 +66,7 @@ double ConditionsLoadCase<dim>::value(const Parsed& c, const Point<dim>& X, doub
   if (c.condition.type != BoundaryCondition::Type::velocity)
   {
     c.function->set_time(t);
-    return c.function->value(X, k);
+    return finite(c, c.function->value(X, k), X, t, k);
   }
   constexpr int n = 64; // composite Simpson of the rate over [0, t]
   const double h = t / n;
@@ -52,7 +74,7 @@ double ConditionsLoadCase<dim>::value(const Parsed& c, const Point<dim>& X, doub
   for (int j = 0; j <= n; ++j)
   {
     c.function->set_time(j * h);
-    sum += (j == 0 || j == n ? 1.0 : j % 2 == 1 ? 4.0 : 2.0) * c.function->value(X, k);
+    sum += (j == 0 || j == n ? 1.0 : j % 2 == 1 ? 4.0 : 2.0) * finite(c, c.function->value(X, k), X, j * h, k);
   }
   return sum * h / 3.0;
 }
@@ -106,7 +128,7 @@ void ConditionsLoadCase<dim>::add_traction(const Parsed& c, const typename DoFHa
     const double dA = dim == 2 ? tangent[0].norm() : cross_product_3d(tangent[0], tangent[dim - 2]).norm();
     for (unsigned int v = 0; v < face->n_vertices(); ++v)
       for (unsigned int k = 0; k < dim; ++k)
-        f[face->vertex_dof_index(v, k)] += gauss.weight(g) * dA * N[v] * c.function->value(X, k);
+        f[face->vertex_dof_index(v, k)] += gauss.weight(g) * dA * N[v] * finite(c, c.function->value(X, k), X, t, k);
   }
 }
 

@@ -43,6 +43,8 @@ private:
     BoundaryCondition condition;
     std::unique_ptr<dealii::FunctionParser<dim>> function; ///< null for fixed
   };
+  /// @p v, a value of @p c's expression @p k at @p X and @p t. @throws std::runtime_error naming them if it is not finite.
+  static double finite(const Parsed& c, double v, const dealii::Point<dim>& X, double t, unsigned int k);
   /// Value of component @p k of @p c's function at @p X and time @p t.
   static double value(const Parsed& c, const dealii::Point<dim>& X, double t, unsigned int k);
   /// Adds the nodal forces of @p c's dead traction at time @p t on reference @p face to @p f.

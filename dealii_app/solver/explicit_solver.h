@@ -113,6 +113,9 @@ private:
 
   void inject_fault_if_due(bool first_attempt);
   void finish_isotropic_stage();
+  /// Evaluates the loading at every load step's end (a boundary function giving NaN is named
+  /// before any RVE is built). @throws std::runtime_error naming the condition.
+  void check_loading_is_finite() const;
   /// The step's F becomes every IP's F_last_step (after its output).
   void close_load_step();
 

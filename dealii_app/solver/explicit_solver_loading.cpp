@@ -23,7 +23,8 @@ void ExplicitSolver<dim>::run()
   t_start_ = MPI_Wtime();
   make_grid();
   setup_system();
-  if (prm_.dynamics.slow_loading()) // refused before the RVEs are made
+  check_loading_is_finite(); // refusals before the RVEs are made
+  if (prm_.dynamics.slow_loading())
     slow_loading_step_time(prm_, largest_step_strain());
   assemble_lumped_mass();
   prepare_output_directory();
@@ -171,6 +172,23 @@ void ExplicitSolver<dim>::finish_isotropic_stage()
   load_case_->finish_stage_1(fields_.displacement);
   for (IpState<dim>& p : ip_)
     p.J_ic = determinant(p.F);
+}
+
+// In dynamics the times between the steps' ends are checked as they come.
+template <int dim>
+void ExplicitSolver<dim>::check_loading_is_finite() const
+{
+  Vector<double> u(dof_handler_.n_dofs()), f(dof_handler_.n_dofs());
+  for (unsigned int stage = 1; stage <= 2; ++stage)
+  {
+    const unsigned int n = load_case_->steps_in_stage(stage);
+    for (unsigned int k = 0; n > 0 && k <= n; ++k)
+    {
+      const double fraction = static_cast<double>(k) / n;
+      load_case_->constraints(stage, fraction);
+      load_case_->external_force(stage, fraction, dof_handler_, u, f);
+    }
+  }
 }
 
 template <int dim>

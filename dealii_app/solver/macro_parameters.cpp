@@ -367,6 +367,7 @@ std::vector<BoundaryCondition> BoundaryCondition::parse_all(dealii::ParameterHan
     const std::string where = "subsection Boundary condition " + std::to_string(n);
     prm.enter_subsection("Boundary condition " + std::to_string(n));
     BoundaryCondition c;
+    c.number = n;
     c.boundary_text = dealii::Utilities::trim(prm.get("Boundary"));
     const std::string type = prm.get("Type"), components = prm.get("Components");
     c.function = prm.get("Function");

@@ -184,6 +184,7 @@ struct BoundaryCondition
     traction,     ///< dead load: nominal traction T(X, t) (dim functions) on the reference face
     pressure      ///< follower pressure p(t) normal to the current face (one function)
   } type;
+  unsigned int number = 0;            ///< N of its subsection 'Boundary condition N' (messages)
   std::string boundary_text;          ///< as written (messages)
   unsigned int boundary_id;           ///< fe2dem's id (load_case.h BoxFace, 2 dim: other)
   std::vector<unsigned int> components; ///< fixed/displacement/velocity: constrained components

@@ -1,4 +1,5 @@
 #include "prepared_rve.h"
+#include "stop_request.h"
 
 #include <algorithm>
 #include <cmath>
@@ -154,6 +155,10 @@ std::vector<char> PreparedRveFactory<dim>::prepare() const
       for (int i = 0; i < dim; ++i)
         F(i, i) += std::clamp((target - s_previous(i, i)) / slope(i), -0.01, 0.01);
       rve->solve(F);
+      if (stop_requested()) // every rank prepares its own copy, so every rank stops here
+        throw std::runtime_error(preparation_.source + ": stopped by a signal while preparing the "
+                                 "RVEs; no load step converged, so there is nothing to resume: "
+                                 "start the run again");
       rve->commit();
       bool done = true;
       for (int i = 0; i < dim; ++i)

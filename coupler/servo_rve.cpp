@@ -1,4 +1,5 @@
 #include "servo_rve.h"
+#include "stop_request.h"
 
 #include "liggghts_error_trap.h"
 #include "particle_dump.h"
@@ -253,6 +254,11 @@ void ServoRve<dim>::hold_until_at_rest(const Matrix& F, long steps, TimedTally& 
                             ", E_kin/E_pot = " + std::to_string(r.ekin_epot) + ")");
     }
     timed_solve(F, steps, tally);
+    if (stop_requested()) // no steps were run: the budget above would never stop the loop
+    {
+      last_converged_ = false;
+      return;
+    }
   } while (!fix_->at_rest());
   last_converged_ = true;
 }
@@ -397,6 +403,13 @@ void ServoRve<dim>::run_until_done(bool bounded)
   {
     while (fix_->status() == Fix::running)
     {
+      if (stop_requested()) // ended unconverged, no error: the caller stops (stop_request.h)
+      {
+        full_setup_next_ = first;
+        last_seconds_ = MPI_Wtime() - t0;
+        last_converged_ = false;
+        return;
+      }
       const std::string n = std::to_string(fix_->check_interval());
       instance_->command(first ? "run " + n + " post no" : "run " + n + " pre no post no");
       last_loop_seconds_ += instance_->lammps()->timer->array[TIME_LOOP];

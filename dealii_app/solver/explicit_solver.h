@@ -116,6 +116,8 @@ private:
   /// Evaluates the loading at every load step's end (a boundary function giving NaN is named
   /// before any RVE is built). @throws std::runtime_error naming the condition.
   void check_loading_is_finite() const;
+  /// @throws std::runtime_error (on every rank) if a stop signal arrived; @p when names the phase.
+  void refuse_stop_before_first_step(const char* when) const;
   /// The step's F becomes every IP's F_last_step (after its output).
   void close_load_step();
 

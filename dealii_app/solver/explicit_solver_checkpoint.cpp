@@ -3,6 +3,7 @@
 // load step; --resume continues from the newest one, on any number of ranks.
 #include "checkpoint_file.h"
 #include "explicit_solver.h"
+#include "stop_request.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -22,9 +23,12 @@ namespace
 {
 volatile std::sig_atomic_t received_signal = 0;
 
+// Also asks the RVE solves under way to end (stop_request.h): a solve that
+// never converges would otherwise keep the run from ever reaching its check.
 extern "C" void on_stop_signal(int signal)
 {
   received_signal = signal;
+  fe2dem::request_stop();
 }
 
 /// 'key = value' lines (Parameters::identity) as a map.

@@ -31,11 +31,13 @@ void ExplicitSolver<dim>::run()
   stage_ = load_case_->steps_in_stage(1) > 0 ? 1 : 2;
   const std::string checkpoint = resume_ ? resume_from_checkpoint() : "";
   make_material(checkpoint);
+  refuse_stop_before_first_step("while the RVEs were built");
   make_one_point_elements();
   analysis_ = make_analysis<dim>(*this, prm_, highest_frequency(), relaxation_frequency(), pcout_);
   if (checkpoint.empty())
   {
     analysis_->start();
+    refuse_stop_before_first_step("at the initial state's solves");
     energy_.start(fields_.displacement, fields_.f_int, external_with_reactions(), fields_.f_hourglass);
   }
   else
@@ -137,6 +139,7 @@ unsigned int ExplicitSolver<dim>::solve_load_step()
       fields_.displacement = start;
     }
   }
+  stop_if_signalled(); // a solve a signal ended early (stop_request.h) is never committed
   material_->commit();
   step_increment_ = fields_.displacement;
   step_increment_ -= start;
@@ -172,6 +175,19 @@ void ExplicitSolver<dim>::finish_isotropic_stage()
   load_case_->finish_stage_1(fields_.displacement);
   for (IpState<dim>& p : ip_)
     p.J_ic = determinant(p.F);
+}
+
+// A signal before the initial state is complete may have ended RVE solves
+// early (stop_request.h): a checkpoint of that state would resume from
+// unrelaxed RVEs, so none is written.
+template <int dim>
+void ExplicitSolver<dim>::refuse_stop_before_first_step(const char* when) const
+{
+  if (const int signal = stop_signal_received())
+    throw std::runtime_error(std::string("stopped by signal ") + std::to_string(signal) + " " + when +
+                             ", before the first load step: no checkpoint is written; " +
+                             (resume_ ? "continue again with --resume (the checkpoint it started from is unchanged)"
+                                      : "nothing converged to resume from: start the run again"));
 }
 
 // In dynamics the times between the steps' ends are checked as they come.

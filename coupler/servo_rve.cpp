@@ -455,7 +455,7 @@ class ServoRveFactory : public RveFactory<dim>
 {
 public:
   ServoRveFactory(const RveSetup& setup, HistoryMode mode) : setup_(setup), mode_(mode) {}
-  void check() const override { check_rve_template(setup_); }
+  void check() const override { check_rve_template(setup_, dim); }
   std::unique_ptr<Rve<dim>> create() const override
   {
     return std::make_unique<ServoRve<dim>>(setup_, mode_);

@@ -1,4 +1,5 @@
 #include "template_check.h"
+#include "packing_check.h"
 
 #include <spawn.h>
 #include <sys/wait.h>
@@ -57,11 +58,20 @@ std::string executable()
 }
 } // namespace
 
-void check_rve_template(const RveSetup& setup)
+void check_rve_template(const RveSetup& setup, const int dim)
 {
   namespace fs = std::filesystem;
   if (!fs::is_regular_file(setup.template_file))
     throw TemplateError("RVE template '" + setup.template_file + "' does not exist or is not a file");
+  if (const auto data = setup.variables.find("rve_data"); data != setup.variables.end())
+    try
+    {
+      check_packing_data(data->second, dim);
+    }
+    catch (const std::runtime_error& e)
+    {
+      throw TemplateError(std::string("the RVE packing: ") + e.what());
+    }
   const std::string base = (fs::temp_directory_path() / ("fe2dem-check-" + std::to_string(getpid()))).string();
   const std::string wrapper = base + ".in", output = base + ".out";
   {

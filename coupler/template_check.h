@@ -22,11 +22,13 @@ public:
 };
 
 /**
- * Runs @p setup's template with its variables and `run 0` in a child
- * process. The child is `fe2dem-liggghts` from this build (or the path in
+ * Checks @p setup's packing data file (variable rve_data, packing_check.h)
+ * for a @p dim-dimensional RVE, then runs @p setup's template with its
+ * variables and `run 0` in a child process. The child is `fe2dem-liggghts` from this build (or the path in
  * the environment variable FE2DEM_LIGGGHTS); MPI launcher variables are
  * removed from its environment so that it starts as a singleton.
- * @throws TemplateError "FILE:LINE: LIGGGHTS error: MESSAGE (command: ...)".
+ * @throws TemplateError "FILE:LINE: LIGGGHTS error: MESSAGE (command: ...)", or
+ *         "DATA_FILE:LINE: ..." for the packing.
  */
-void check_rve_template(const RveSetup& setup);
+void check_rve_template(const RveSetup& setup, int dim);
 } // namespace fe2dem

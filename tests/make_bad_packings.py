@@ -8,7 +8,9 @@ Writes OUT_DIR/{no_frame,unpaired,overlap}.{rve.data,vars}:
   overlap   an inner particle moved onto another one;
 and, for LIGGGHTS' own messages (issue 16), negative_radius, zero_density,
 text_type (a word in the type column) and no_ly (a vars file without rve_Ly);
-and 'with space/spaced', a valid copy in a directory whose name has a space.
+and 'with space/spaced', a valid copy in a directory whose name has a space;
+and, for fe2dem's own check of the data file (issue 39), zero_radius,
+text_radius ('0.00x7' as a diameter), nan_coordinate and inf_coordinate.
 """
 import sys
 
@@ -47,6 +49,10 @@ first = [list(r) for r in atoms]
 write("negative_radius", [first[0][:2] + ["-" + first[0][2]] + first[0][3:]] + atoms[1:])
 write("zero_density", [first[0][:3] + ["0"] + first[0][4:]] + atoms[1:])
 write("text_type", [[first[0][0], "x"] + first[0][2:]] + atoms[1:])
+write("zero_radius", [first[0][:2] + ["0"] + first[0][3:]] + atoms[1:])
+write("text_radius", [first[1]] + [first[2][:2] + ["0.00x7"] + first[2][3:]] + atoms[2:] + [first[0]])
+write("nan_coordinate", [first[0][:4] + ["nan"] + first[0][5:]] + atoms[1:])
+write("inf_coordinate", [first[0][:5] + ["-inf"] + first[0][6:]] + atoms[1:])
 write("no_ly", atoms)
 with open(f"{out}/no_ly.vars", "w") as f:
     f.write("\n".join(l for l in data.vars_text.splitlines() if "rve_Ly" not in l) + "\n")

@@ -17,10 +17,11 @@ namespace fe2dem::rve_driver
 {
 namespace
 {
-/// Checks the template in a child process first: LIGGGHTS would exit(1).
+/// Checks the packing and the template (in a child process) first: LIGGGHTS would exit(1).
+template <int dim>
 RveSetup checked(const RveSetup& setup)
 {
-  check_rve_template(setup);
+  check_rve_template(setup, dim);
   return setup;
 }
 
@@ -53,7 +54,7 @@ template <int dim>
 RvePathRunner<dim>::RvePathRunner(const Parameters& parameters)
   : axial(dim == 2 ? 3 : parameters.path.axial_y ? 4 : 8),
     lateral(parameters.path.axial_y ? std::array<int, 2>{{0, 8}} : std::array<int, 2>{{0, 4}}),
-    prm_(parameters), rve_(checked(parameters.rve.setup("none")))
+    prm_(parameters), rve_(checked<dim>(parameters.rve.setup("none")))
 {
   // A first guess of the stiffness d sigma / d F; the secant iteration
   // corrects it after the first trial. 2D: ~ k_n (stress in N/m). 3D (Pa):

@@ -18,8 +18,12 @@ if [[ $np -eq 1 ]]; then "$exe" case.prm > stopped.log 2>&1 &
 else mpiexec --allow-run-as-root --oversubscribe -np "$np" "$exe" case.prm > stopped.log 2>&1 &
 fi
 pid=$!
-# Any moment after the handlers are installed (at start-up) lands in a stuck solve.
-sleep 5
+# Any moment after the handlers are installed lands in a stuck solve: wait
+# for the first line fe2dem prints after installing them (no fixed delay).
+until grep -q "^creating [0-9]* RVEs" stopped.log 2>/dev/null; do
+  kill -0 $pid 2>/dev/null || { echo "FAIL: fe2dem ended before building its RVEs"; cat stopped.log; exit 1; }
+  sleep 0.1
+done
 kill -TERM $pid
 for ((i = 0; i < 600; ++i)); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
 if kill -0 $pid 2>/dev/null; then

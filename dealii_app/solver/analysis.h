@@ -122,14 +122,6 @@ public:
 };
 
 /**
- * Slow loading: the time of every load step, @p largest_step_strain (of the
- * fastest step, MacroSystem::largest_step_strain) over 'Strain rate', with
- * RVEs rounded up to whole RVE check intervals.
- * @throws std::runtime_error if @p largest_step_strain is 0 (nothing sets the pace).
- */
-double slow_loading_step_time(const Parameters& prm, double largest_step_strain);
-
-/**
  * The analysis of subsection Dynamics ('Analysis' = dynamic, or quasi-static
  * with 'Quasi-static scheme' = slow loading: central differences; relaxed
  * steps: dynamic relaxation).

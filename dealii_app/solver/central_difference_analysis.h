@@ -27,6 +27,14 @@
 
 namespace fe2dem::macro
 {
+/**
+ * Slow loading: the time of every load step, @p largest_step_strain (of the
+ * fastest step, MacroSystem::largest_step_strain) over 'Strain rate', with
+ * RVEs rounded up to whole RVE check intervals.
+ * @throws std::runtime_error if @p largest_step_strain is 0 (nothing sets the pace).
+ */
+double slow_loading_step_time(const Parameters& prm, double largest_step_strain);
+
 template <int dim>
 class CentralDifferenceAnalysis : public Analysis<dim>
 {

@@ -38,12 +38,15 @@ set(FE2DEM_LONG_RUNS
   restart_3d_rve_kill_np2_resume_np1
   # [LSYF] anchors and the continuous references of issue 35
   rve_3d_lsyf_moduli rve_continuous_shear_reference rve_continuous_triaxial_reference
+  rve_continuous_triaxial_reference_affine
   rve_continuous_proportional_0.25 rve_continuous_proportional_0.125
   rve_continuous_integral_0.125 rve_continuous_hold_rows
   # RVEs prepared at a pressure, dynamic (the unprepared dynamic runs stay)
   macro_prepared_rve_holds_its_pressure macro_dynamic_rve_prepared_np1
   macro_dynamic_rve_prepared_np2 restart_dynamic_rve_prepared_kill_np2_resume_np1
   macro_dynamic_rve_triaxial_slow macro_dynamic_rve_shear_fast macro_dynamic_rve_shear_slow
+  # [LSYF] problem 2 at full size: the linear wave column and its M (minutes)
+  macro_lsyf_constrained_modulus macro_lsyf_wave_column_1um
   # slow loading against the continuous reference (the column stays)
   macro_slow_loading_triaxial_0.25 macro_slow_loading_triaxial_0.125
   # waves and beams of many steps (the 2D energy checks stay)

@@ -2,7 +2,8 @@
 # [LSYF] problems 1 and 2 at full size (issue 35, items 6 and 7): lsyf_4096
 # RVEs with the [LSYF] Hertz grains prepared at 416 kPa ('Initial pressure').
 #   wave       problem 2: the wave column (wave_column.prm, 2 ranks), the
-#              constrained modulus M of its RVE (constrained_modulus.prm), an
+#              constrained modulus M of its RVE (constrained_modulus.prm; and
+#              its sigma(eps) to 1 % for the nonlinear front), an
 #              elastic column with that M (the same mesh and loading), and
 #              wave.py's table and PNG
 #   problem1   problem 1: one element in triaxial compression and in simple
@@ -13,9 +14,10 @@
 #              continuously (problem1_triaxial_{quasi_static,rve_stepped}.prm)
 #   modulus    the RVE's constrained modulus under a sinusoidal strain of
 #              amplitude 1e-4 at 2.5 and 10 kHz (constrained_modulus.prm
-#              driven by a sine; lsyf_4096, also with the proportional frame
-#              servo and without Cundall damping at 10 kHz, and lsyf_1000):
-#              results/dynamic_modulus.txt
+#              driven by a sine; lsyf_4096 and lsyf_1000, each with the
+#              default 'Inner start' (affine in dynamics) and with keep, and
+#              with keep also with the proportional frame servo and without
+#              Cundall damping at 10 kHz): results/dynamic_modulus.txt
 #   tables     the comparison tables from what exists
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
 # result exists is not run again.
@@ -70,6 +72,9 @@ wave() {
   lambda=$(awk -v M="$M" -v mu="$mu" 'BEGIN {printf "%.6g", M - 2 * mu}')
   local elastic="s/^  set Type              = RVE/  set Type              = neo-Hookean\n  set Shear modulus     = $mu\n  set Lame lambda       = $lambda/; s/^  set Initial pressure .*//"
   local small="s#-1e-4 \* sin#-1e-6 * sin#"
+  # the same RVE's sigma_yy(eps_yy) to 1 % at 0.5 /s: the speeds of a nonlinear front
+  local ramp="s#-1e-6 \* t / 0.004#-1e-4 * t / 0.02#; s#set End time   = 0.004#set End time   = 0.02#; s#set Load steps = 20#set Load steps = 80#; s#^  set Analysis     = dynamic#  set Analysis     = dynamic\n  set Time step    = 1e-6#"
+  run_macro constrained_modulus_1_percent "$here/constrained_modulus.prm" 1 "$ramp"
   run_macro wave_column "$here/wave_column.prm" 2
   run_macro wave_column_elastic "$here/wave_column.prm" 1 "$elastic"
   # the same column driven at 1 um: a linear wave (strain amplitude 1e-4)
@@ -82,7 +87,7 @@ wave_table() {
   {
     echo "## driven at 0.1 mm ([LSYF])"
     $py "$here/wave.py" column "$r/constrained_modulus/out" "$r/wave_column/out" "$r/wave_column_elastic/out" \
-      "$r/wave_column.png" 1e-4
+      "$r/wave_column.png" 1e-4 "$r/constrained_modulus_1_percent/out"
     echo "## driven at 1 um (linear)"
     $py "$here/wave.py" column "$r/constrained_modulus/out" "$r/wave_column_1um/out" "$r/wave_column_1um_elastic/out" \
       "$r/wave_column_1um.png" 1e-6
@@ -101,20 +106,24 @@ modulus() {
   local prop="s#hertz 1, youngs#timed_servo proportional, hertz 1, youngs#"
   local nodamp="s#^\(  set Friction .*\)#\1\n  set Local damping force  = 0\n  set Local damping moment = 0#"
   local small="s#packings/lsyf_4096#packings/lsyf_1000#"
-  run_macro modulus_lsyf_4096_2.5kHz "$prm" 1 "$(sine 2.5e3 2)"
-  run_macro modulus_lsyf_4096_10kHz "$prm" 1 "$(sine 1e4 3)"
-  run_macro modulus_lsyf_4096_10kHz_proportional "$prm" 1 "$(sine 1e4 3); $prop"
-  run_macro modulus_lsyf_4096_10kHz_no_damping "$prm" 1 "$(sine 1e4 3); $nodamp"
-  run_macro modulus_lsyf_1000_2.5kHz "$prm" 1 "$(sine 2.5e3 2); $small"
-  run_macro modulus_lsyf_1000_10kHz "$prm" 1 "$(sine 1e4 3); $small"
+  local keep="s#^\(  set Friction .*\)#\1\n  set Inner start = keep#"
+  local c
+  # the default ('Inner start' = auto: affine in dynamics) and keep
+  for c in "lsyf_4096;" "lsyf_4096_keep;$keep" "lsyf_1000;$small" "lsyf_1000_keep;$small; $keep"; do
+    run_macro "modulus_${c%%;*}_2.5kHz" "$prm" 1 "$(sine 2.5e3 2); ${c#*;}"
+    run_macro "modulus_${c%%;*}_10kHz" "$prm" 1 "$(sine 1e4 3); ${c#*;}"
+  done
+  run_macro modulus_lsyf_4096_keep_10kHz_proportional "$prm" 1 "$(sine 1e4 3); $keep; $prop"
+  run_macro modulus_lsyf_4096_keep_10kHz_no_damping "$prm" 1 "$(sine 1e4 3); $keep; $nodamp"
   modulus_table
 }
 modulus_table() {
   local c
   {
     echo "# case M_dyn[MPa] mean_sigma_yy[Pa] phase_lag[deg] (fit over the last period(s))"
-    for c in lsyf_4096_2.5kHz lsyf_4096_10kHz lsyf_4096_10kHz_proportional lsyf_4096_10kHz_no_damping \
-      lsyf_1000_2.5kHz lsyf_1000_10kHz; do
+    for c in lsyf_4096_2.5kHz lsyf_4096_10kHz lsyf_4096_keep_2.5kHz lsyf_4096_keep_10kHz \
+      lsyf_4096_keep_10kHz_proportional lsyf_4096_keep_10kHz_no_damping \
+      lsyf_1000_2.5kHz lsyf_1000_10kHz lsyf_1000_keep_2.5kHz lsyf_1000_keep_10kHz; do
       local d="$results/modulus_$c/out" f=1e4 t=1e-4
       [[ $c == *2.5kHz* ]] && { f=2.5e3; t=4e-4; }
       [[ -f "$d/history.h5" ]] || continue

@@ -18,6 +18,18 @@
       reflected from the fixed end can return ((2 L - d) / c_M). The PNG
       shows u_y along the column at five times (25, 75, 125, 175, 975 us: the driven end at its
       extremes), RVE column against elastic.
+
+  wave.py column ... AMPLITUDE RAMP_OUT
+      As above, and the speeds a nonlinear front would have at the arrival
+      threshold strain eps_t, from the same RVE's sigma_yy(eps_yy) of a slower
+      ramp to 1 % (RAMP_OUT: constrained_modulus.prm to 1 % at 0.5 /s):
+      sqrt(M_t(eps_t) / rho) for a simple wave (the tangent, each strain
+      level travelling at its own speed) and sqrt(M_c / rho) for a shock
+      (the chord from 0 to eps_t).
+
+  wave.py speed MODULUS_OUT RVE_OUT AMPLITUDE TOL
+      The check of ctest macro_lsyf_wave_column_*: the RVE column's front
+      speed (as above) within TOL of c_M; exit status 1 if not.
 """
 import csv
 import math
@@ -69,10 +81,47 @@ def arrivals(times, y, eps, threshold):
     return result
 
 
+def front_speed(run, threshold):
+    """(arrival times at DISTANCES, the fitted front speed) of column()'s RUN."""
+    times, y, eps, u = run
+    t_arr = arrivals(times, y, eps, threshold)
+    ok = [i for i, t in enumerate(t_arr) if not math.isnan(t)]
+    speed = np.polyfit([t_arr[i] for i in ok], [DISTANCES[i] for i in ok], 1)[0] if len(ok) >= 2 else math.nan
+    return t_arr, speed
+
+
+def nonlinear_speeds(ramp_out, eps_t, speed):
+    """The tangent and chord speeds at the strain eps_t of the ramp in RAMP_OUT."""
+    with h5py.File(f"{ramp_out}/history.h5", "r") as h:
+        eps = 1.0 - h["F"][:, 0, 4]  # compression positive; the rows start at the first output
+        syy = -h["sigma"][:, 0, 4]
+    s0 = syy[0] - (syy[1] - syy[0]) / (eps[1] - eps[0]) * eps[0]  # extrapolated to eps = 0
+    eps, syy = np.concatenate([[0.0], eps]), np.concatenate([[s0], syy])
+    k = int(np.searchsorted(eps, eps_t))
+    tangent = (syy[k + 1] - syy[k - 1]) / (eps[k + 1] - eps[k - 1])
+    chord = (np.interp(eps_t, eps, syy) - syy[0]) / eps_t
+    for name, M in (("tangent (a simple wave)", tangent), ("chord from 0 (a shock)", chord)):
+        v = math.sqrt(M / RHO)
+        print(f"the RVE's own sigma_yy(eps_yy) at the threshold {100 * eps_t:.3g} %: {name} M = {M / 1e6:.0f} MPa, "
+              f"sqrt(M/rho) = {v:.1f} m/s; the RVE column's front {100 * (speed / v - 1):+.1f} %")
+
+
+def check_speed():
+    M = modulus(sys.argv[2])
+    A, tol = float(sys.argv[4]), float(sys.argv[5])
+    c = math.sqrt(M / RHO)
+    t_arr, speed = front_speed(column(sys.argv[3]), 2 * math.pi * FREQ * A / c / 5)
+    print("arrivals (us): " + ", ".join(f"{1e6 * t:.1f}" for t in t_arr))
+    print(f"front speed {speed:.1f} m/s, c_M = {c:.1f} m/s: {100 * (speed / c - 1):+.1f} % (allowed {100 * tol:g} %)")
+    sys.exit(0 if abs(speed / c - 1) <= tol else 1)
+
+
 def main():
     if sys.argv[1] == "modulus":
         print(f"{modulus(sys.argv[2]):.6g}")
         return
+    if sys.argv[1] == "speed":
+        check_speed()
     M = modulus(sys.argv[2])
     A = float(sys.argv[6])
     c = math.sqrt(M / RHO)
@@ -81,10 +130,9 @@ def main():
     print(f"driving amplitude A = {1e3 * A:.4g} mm; M = {M:.4g} Pa (constrained_modulus.prm), rho = {RHO} kg/m^3: c_M = sqrt(M/rho) = {c:.1f} m/s; "
           f"driving strain amplitude omega A / c_M = {eps_a:.3g}, arrival threshold {eps_a / 5:.3g}")
     table = {}
-    for name, (times, y, eps, u) in runs.items():
-        t_arr = arrivals(times, y, eps, eps_a / 5)
-        ok = [i for i, t in enumerate(t_arr) if not math.isnan(t)]
-        speed = np.polyfit([t_arr[i] for i in ok], [DISTANCES[i] for i in ok], 1)[0] if len(ok) >= 2 else math.nan
+    for name, run in runs.items():
+        times, y, eps, u = run
+        t_arr, speed = front_speed(run, eps_a / 5)
         amplitude = []
         for d in DISTANCES:
             k = int(np.argmin(np.abs(y - (L - d)))) + 1  # the node above the IP
@@ -102,6 +150,8 @@ def main():
     print()
     for name, (t_arr, speed, amplitude) in table.items():
         print(f"front speed, {name}: {speed:.1f} m/s = {100 * (speed / c - 1):+.1f} % of c_M")
+    if len(sys.argv) > 7:
+        nonlinear_speeds(sys.argv[7], eps_a / 5, table["RVE column"][1])
 
     import matplotlib
     matplotlib.use("Agg")

@@ -178,11 +178,15 @@ void RveParameters::declare_parameters(dealii::ParameterHandler& prm)
   prm.declare_entry("Start", "keep", Selection("keep|reset"),
                     "At a new F, keep the frame fluctuations of the previous solve or reset "
                     "them to zero.");
-  prm.declare_entry("Inner start", "keep", Selection("keep|affine"),
+  prm.declare_entry("Inner start", "auto", Selection("auto|keep|affine"),
                     "At a new F: keep = inner particles start where they are and follow the "
                     "frame through contacts ([LBS]); affine = they also move with the affine "
                     "velocity field of the old to the new F while the frame moves (contact "
-                    "springs see it).");
+                    "springs see it), as the particles of a periodic cell follow its mean "
+                    "motion. auto = affine in explicit dynamics ('Analysis' = dynamic of "
+                    "fe2dem), where the macro scale carries the grains' inertia (with keep the "
+                    "RVE's interior lags its frame and the RVE answers a 10 kHz strain 30 % "
+                    "softer than a slow one on lsyf_4096), keep otherwise.");
   prm.declare_entry("Relaxation criterion", "ekin_epot", Selection("ekin_epot|unbalanced"),
                     "E_kin/E_pot (R12) or the unbalanced-force index (R13).");
   prm.declare_entry("Relaxation tolerance", "1e-3", Double(0.0),
@@ -314,6 +318,12 @@ void RveParameters::check_files(const std::string& prm_file) const
                                "at spaces; use a path without spaces (e.g. a symbolic link)");
 }
 
+void RveParameters::resolve_inner_start(bool explicit_dynamics)
+{
+  if (inner_start == "auto")
+    inner_start = explicit_dynamics ? "affine" : "keep";
+}
+
 std::map<std::string, std::string> RveParameters::entry_variables() const
 {
   return {{"kn", number(kn)},
@@ -342,6 +352,8 @@ RveSetup RveParameters::setup(const std::string& log_file) const
   if (servo_scale == "template")
     throw std::logic_error("RveParameters::setup(): the template defaults were not read (no template "
                            "file at parse time; check_files() reports it)");
+  if (inner_start == "auto")
+    throw std::logic_error("RveParameters: 'Inner start' = auto was not resolved (resolve_inner_start())");
   RveSetup s = packing_setup(template_file, packing);
   s.log_file = log_file;
   const auto entries = entry_variables();

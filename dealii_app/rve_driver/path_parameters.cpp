@@ -195,6 +195,7 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
   prm.parse_input(file); // throws deal.II's message naming the line on unknown entries
   output_directory = resolve_path(base, prm.get("Output directory"));
   rve.parse_parameters(prm, base);
+  rve.resolve_inner_start(/*explicit_dynamics=*/false); // fe2dem-rve's paths are quasi-static
   path.parse_parameters(prm, base);
   rve.check_files(file);
   if (path.continuous && path.control_interval % rve.check_interval != 0)

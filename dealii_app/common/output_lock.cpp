@@ -6,10 +6,29 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 
 namespace fe2dem
 {
+void make_output_directory(const std::string& directory, const std::string& named_as)
+{
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  for (fs::path p = fs::path(directory).lexically_normal(); !p.empty(); p = p.parent_path())
+  {
+    if (fs::exists(p, ec) && !fs::is_directory(p, ec))
+      throw std::runtime_error(named_as + ": '" + p.string() + "' is a file, not a directory; name a "
+                               "directory for the output (it is created if missing)");
+    if (p == p.parent_path())
+      break;
+  }
+  fs::create_directories(directory, ec);
+  if (ec)
+    throw std::runtime_error(named_as + ": cannot create '" + directory + "' (" + ec.message() +
+                             "); choose a writable directory");
+}
+
 OutputLock::OutputLock(const std::string& directory)
 {
   const std::string file = directory + "/.fe2dem.lock";

@@ -13,6 +13,15 @@
 
 namespace fe2dem
 {
+/**
+ * Creates @p directory (and its parents) if missing.
+ * @param named_as how the user gave it, for the message (e.g. "'Output
+ *        directory' = '...'" or "--output-directory ...").
+ * @throws std::runtime_error naming it if it, or a parent, is a file, or if
+ *         it cannot be created (with the system's reason).
+ */
+void make_output_directory(const std::string& directory, const std::string& named_as);
+
 class OutputLock
 {
 public:

@@ -1,5 +1,6 @@
 // fe2dem-rve FILE.prm: one RVE along a macro path; writes OUTPUT/rve.csv.
 #include "fe2dem_version.h"
+#include "output_lock.h"
 #include "path_parameters.h"
 #include "rve_path_runner.h"
 
@@ -57,6 +58,11 @@ int main(int argc, char** argv)
       parameters.parse(prm, argv[1]);
       if (with_output)
         parameters.output_directory = argv[3];
+      // before the RVE is built: LIGGGHTS starts in the runner's constructor
+      fe2dem::make_output_directory(parameters.output_directory,
+                                    with_output ? std::string("--output-directory ") + argv[3]
+                                                : std::string(argv[1]) + ": 'Output directory' = '" +
+                                                    parameters.output_directory + "'");
       if (parameters.path.dimension == 3)
         RvePathRunner<3>(parameters).run();
       else

@@ -67,18 +67,17 @@ void ExplicitSolver<dim>::prepare_output_directory()
     const std::string unwritable = "cannot write to 'Output directory' = '" + prm_.output_directory +
                                    "': choose a writable directory";
     std::error_code ec;
-    std::filesystem::create_directories(prm_.output_directory + "/checkpoints", ec);
-    if (ec)
-      problem = unwritable;
-    else // one writer per directory, before anything in it is removed or truncated
-      try
-      {
-        output_lock_ = std::make_unique<OutputLock>(prm_.output_directory);
-      }
-      catch (const std::runtime_error& e)
-      {
-        problem = e.what();
-      }
+    try
+    {
+      make_output_directory(checkpoint_directory_,
+                            prm_.file + ": 'Output directory' = '" + prm_.output_directory + "'");
+      // one writer per directory, before anything in it is removed or truncated
+      output_lock_ = std::make_unique<OutputLock>(prm_.output_directory);
+    }
+    catch (const std::runtime_error& e)
+    {
+      problem = e.what();
+    }
     if (problem.empty())
     {
       if (!prm_.particle_dumps.points.empty())

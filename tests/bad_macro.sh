@@ -7,6 +7,8 @@
 #   (a later 'set' wins), e.g. 'subsection Geometry~set Mesh file = x.msh~end'.
 #   '@TESTS@' in BASE.prm and OVERRIDES becomes this directory.
 #   LAUNCH (environment): launcher prefix, e.g. "mpiexec -np 3".
+#   ABSENT (environment): a text the output must not contain, e.g. "RVEs on"
+#   for a refusal that must come before any RVE is built.
 set -uo pipefail
 exe=$1 base=$2 work=$3 overrides=$4; shift 4
 tests=$(cd "$(dirname "$0")" && pwd)
@@ -19,6 +21,9 @@ echo "$out" | tail -n 8
 for n in "$@"; do
   grep -qF -- "$n" <<<"$out" || { echo "FAIL: output lacks '$n'"; exit 1; }
 done
+if [[ -n "${ABSENT:-}" ]] && grep -qF -- "$ABSENT" <<<"$out"; then
+  echo "FAIL: the output has '$ABSENT'"; exit 1
+fi
 if [[ -f "$work/out/summary.csv" && $(wc -l < "$work/out/summary.csv") -gt 1 ]]; then
   echo "FAIL: $work/out/summary.csv has result rows"; exit 1
 fi

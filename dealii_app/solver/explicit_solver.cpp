@@ -101,6 +101,9 @@ template <int dim>
 void ExplicitSolver<dim>::make_material(const std::string& checkpoint)
 {
   make_constitutive_material(checkpoint);
+  if (material_->wave_speed() != prm_.material.wave_speed()) // the stable steps were estimated with it
+    throw std::logic_error("ExplicitSolver: the material's wave speed differs from "
+                           "MaterialParameters::wave_speed()");
   if (prm_.elements.corotational)
     material_ = std::make_unique<CorotationalMaterial<dim>>(std::move(material_));
 }

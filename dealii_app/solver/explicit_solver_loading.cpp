@@ -31,10 +31,11 @@ void ExplicitSolver<dim>::run()
   prepare_output_directory();
   stage_ = load_case_->steps_in_stage(1) > 0 ? 1 : 2;
   const std::string checkpoint = resume_ ? resume_from_checkpoint() : "";
+  // Before the RVEs: its refusals (a macro step shorter than one RVE check) are cheap.
+  analysis_ = make_analysis<dim>(*this, prm_, highest_frequency(), relaxation_frequency(), pcout_);
   make_material(checkpoint);
   refuse_stop_before_first_step("while the RVEs were built");
   make_one_point_elements();
-  analysis_ = make_analysis<dim>(*this, prm_, highest_frequency(), relaxation_frequency(), pcout_);
   if (checkpoint.empty())
   {
     analysis_->start();
@@ -223,7 +224,7 @@ void ExplicitSolver<dim>::close_load_step()
 template <int dim>
 double ExplicitSolver<dim>::highest_frequency() const
 {
-  return OnePointElements<dim>::frequency_bound(triangulation_, material_->wave_speed());
+  return OnePointElements<dim>::frequency_bound(triangulation_, prm_.material.wave_speed());
 }
 
 // (M8) of dynamic relaxation is capped by gamma 2/omega_max with (M8)'s
@@ -237,7 +238,7 @@ double ExplicitSolver<dim>::highest_frequency() const
 template <int dim>
 double ExplicitSolver<dim>::relaxation_frequency() const
 {
-  const double estimate = 2.0 * std::sqrt(double(dim)) * material_->wave_speed() / h_min_;
+  const double estimate = 2.0 * std::sqrt(double(dim)) * prm_.material.wave_speed() / h_min_;
   return std::max(estimate, highest_frequency() * prm_.relaxation.safety_factor / 0.9);
 }
 

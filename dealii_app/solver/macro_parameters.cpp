@@ -7,6 +7,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include <filesystem>
 #include <fstream>
@@ -151,6 +152,12 @@ void MaterialParameters::parse_parameters(dealii::ParameterHandler& prm)
                              "continuous history");
   require_positive("Material", {{"Shear modulus", shear_modulus}, {"Density", density},
                                             {"Stability modulus", stability_modulus}});
+}
+
+double MaterialParameters::wave_speed() const
+{
+  return type == Type::rve ? std::sqrt(stability_modulus / density)
+                           : std::sqrt((lame_lambda + 2.0 * shear_modulus) / density);
 }
 
 // In dynamics and slow loading every RVE advances in time with the macro

@@ -55,6 +55,10 @@ struct MaterialParameters
    * dynamics, slow loading) so; @p analysis names the setting that asks for it.
    */
   void check_for_dynamics(const std::string& analysis) const;
+  /// The P-wave speed the stable steps are estimated with [m/s]: sqrt((lambda
+  /// + 2 mu)/rho), or sqrt(Stability modulus / rho) for RVEs; the
+  /// Material::wave_speed() of the material built from these entries.
+  double wave_speed() const;
 };
 
 /**

@@ -9,8 +9,12 @@
 
 #include <mpi.h>
 
+#include <unistd.h>
+
 #include <csignal>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <map>
 #include <sstream>
@@ -23,10 +27,53 @@ namespace
 {
 volatile std::sig_atomic_t received_signal = 0;
 
-// Also asks the RVE solves under way to end (stop_request.h): a solve that
+// The files in /dev/shm this process has mapped when the handlers are
+// installed (after MPI_Init: Open MPI's shared-memory segments), fixed
+// buffers so that the handler needs no allocation.
+constexpr int max_shm_files = 16;
+char shm_files[max_shm_files][256];
+int n_shm_files = 0;
+
+void record_shm_files()
+{
+  std::ifstream maps("/proc/self/maps");
+  std::string line;
+  while (std::getline(maps, line) && n_shm_files < max_shm_files)
+  {
+    const auto at = line.find("/dev/shm/");
+    if (at == std::string::npos)
+      continue;
+    const std::string file = line.substr(at);
+    bool known = file.size() >= sizeof shm_files[0];
+    for (int i = 0; i < n_shm_files && !known; ++i)
+      known = file == shm_files[i];
+    if (!known)
+      std::strcpy(shm_files[n_shm_files++], file.c_str());
+  }
+}
+
+void write_stderr(const char* text) noexcept
+{
+  const ssize_t ignored = ::write(STDERR_FILENO, text, std::strlen(text));
+  (void)ignored;
+}
+
+// The first signal asks for a clean stop (a checkpoint of the last converged
+// step) and the RVE solves under way to end (stop_request.h): a solve that
 // never converges would otherwise keep the run from ever reaching its check.
+// A second one, of any of the three, ends the process at once: a message,
+// the shared-memory files it mapped removed, exit status 128 + signal. Only
+// async-signal-safe calls (write, unlink, _exit).
 extern "C" void on_stop_signal(int signal)
 {
+  if (received_signal != 0)
+  {
+    write_stderr("\nfe2dem: a second stop signal: ending at once, without a checkpoint of this "
+                 "step (--resume continues from the last one written)\n");
+    for (int i = 0; i < n_shm_files; ++i)
+      ::unlink(shm_files[i]);
+    ::_exit(128 + signal);
+  }
   received_signal = signal;
   fe2dem::request_stop();
 }
@@ -77,11 +124,10 @@ void ExplicitSolver<dim>::install_signal_handlers()
   action.sa_handler = on_stop_signal;
   sigemptyset(&action.sa_mask);
   action.sa_flags = SA_RESTART;
+  record_shm_files();
   sigaction(SIGTERM, &action, nullptr);
   sigaction(SIGUSR1, &action, nullptr);
-  // Ctrl-C stops like SIGTERM; a second Ctrl-C kills at once (handler reset).
-  action.sa_flags |= SA_RESETHAND;
-  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGINT, &action, nullptr); // Ctrl-C stops like SIGTERM, a second one at once
 }
 
 template <int dim>

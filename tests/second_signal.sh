@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# A second stop signal ends fe2dem at once (issue 39): SIGTERM starts the
+# clean stop (here inside an RVE solve that never converges), SIGINT right
+# after it (a different signal, so the two cannot merge into one pending
+# signal) must end the process with a message and exit status 130 (128 +
+# SIGINT), without a checkpoint, and remove the shared-memory files it had
+# mapped (on 2 ranks Open MPI's segments, which killed runs used to leave in
+# /dev/shm). Its RVE images in /dev/shm are removed by the next run
+# (shm_images_removed). On 2 ranks the signals go to every rank, as a batch
+# system sends them; the status checked is then mpiexec's (not 0).
+# Usage: second_signal.sh FE2DEM PRM WORKDIR NP
+set -uo pipefail
+exe=$1 prm=$2 work=$3 np=$4
+rm -rf "$work"; mkdir -p "$work"
+{ sed 's#^set Output directory.*#set Output directory = out#' "$prm"
+  printf '\nsubsection RVE\n  set Relaxation tolerance = 1e-30\n  set Servo tolerance = 1e-30\n'
+  printf '  set Step budget = 1000000000\nend\n'; } > "$work/case.prm"
+cd "$work"
+if [[ $np -eq 1 ]]; then "$exe" case.prm > stopped.log 2>&1 &
+else mpiexec --allow-run-as-root --oversubscribe -np "$np" "$exe" case.prm > stopped.log 2>&1 &
+fi
+pid=$!
+until grep -q "^creating [0-9]* RVEs" stopped.log 2>/dev/null; do
+  kill -0 $pid 2>/dev/null || { echo "FAIL: fe2dem ended before building its RVEs"; cat stopped.log; exit 1; }
+  sleep 0.1
+done
+ranks=$pid
+[[ $np -eq 1 ]] || ranks=$(pgrep -P $pid -f "$exe")
+[[ $(wc -w <<<"$ranks") -eq $np ]] || { echo "FAIL: found ranks '$ranks'"; kill -KILL $pid; exit 1; }
+mapped=$(for r in $ranks; do grep -o '/dev/shm/[^ ]*' /proc/$r/maps; done | grep -v '/dev/shm/fe2dem-' | sort -u)
+[[ $np -eq 1 || -n $mapped ]] || { echo "FAIL: no shared-memory file mapped on $np ranks (nothing to check)"; exit 1; }
+for r in $ranks; do kill -TERM $r; kill -INT $r; done
+for ((i = 0; i < 300; ++i)); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
+if kill -0 $pid 2>/dev/null; then kill -KILL $pid; echo "FAIL: still running 30 s after the second signal"; exit 1; fi
+wait $pid; rc=$?
+tail -n 2 stopped.log
+if [[ $np -eq 1 ]]; then
+  [[ $rc -eq 130 ]] || { echo "FAIL: exit code $rc, expected 130 (ended at once by the second signal)"; exit 1; }
+else
+  [[ $rc -ne 0 ]] || { echo "FAIL: exit code 0"; exit 1; }
+fi
+grep -q "a second stop signal: ending at once" stopped.log || { echo "FAIL: no message"; exit 1; }
+[[ -z $(find out -name 'checkpoint-*' 2>/dev/null) ]] || { echo "FAIL: a checkpoint was written"; exit 1; }
+for f in $mapped; do [[ ! -e $f ]] || { echo "FAIL: $f is still there"; exit 1; }; done
+echo "ok: exit code $rc with a message, no checkpoint, mapped shared-memory files removed: ${mapped:-none}"

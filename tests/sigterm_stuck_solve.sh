@@ -9,21 +9,8 @@
 # Usage: sigterm_stuck_solve.sh FE2DEM PRM WORKDIR NP
 set -uo pipefail
 exe=$1 prm=$2 work=$3 np=$4
-rm -rf "$work"; mkdir -p "$work"
-{ sed 's#^set Output directory.*#set Output directory = out#' "$prm"
-  printf '\nsubsection RVE\n  set Relaxation tolerance = 1e-30\n  set Servo tolerance = 1e-30\n'
-  printf '  set Step budget = 1000000000\nend\n'; } > "$work/case.prm"
-cd "$work"
-if [[ $np -eq 1 ]]; then "$exe" case.prm > stopped.log 2>&1 &
-else mpiexec --allow-run-as-root --oversubscribe -np "$np" "$exe" case.prm > stopped.log 2>&1 &
-fi
-pid=$!
-# Any moment after the handlers are installed lands in a stuck solve: wait
-# for the first line fe2dem prints after installing them (no fixed delay).
-until grep -q "^creating [0-9]* RVEs" stopped.log 2>/dev/null; do
-  kill -0 $pid 2>/dev/null || { echo "FAIL: fe2dem ended before building its RVEs"; cat stopped.log; exit 1; }
-  sleep 0.1
-done
+source "$(dirname "$0")/stuck_solve_run.sh"
+start_stuck_run "$exe" "$prm" "$work" "$np"
 kill -TERM $pid
 for ((i = 0; i < 600; ++i)); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
 if kill -0 $pid 2>/dev/null; then

@@ -47,7 +47,6 @@ public:
   }
   const RveResponse<dim>& response() const override { return response_; }
   void set_budget(const SolveBudget& budget) override { inner_->set_budget(budget); }
-  void inject_fault(RveFault fault) override { inner_->inject_fault(fault); }
   void commit() override { inner_->commit(); }
   void rollback() override
   {

@@ -48,14 +48,10 @@ public:
    * How far later solves may go (solve_budget.h): to convergence (the
    * default), bounded by a number of DEM steps (multiple time stepping,
    * [LSYF] Eq. 66: the state as it is, RveResponse::converged false), or
-   * exactly a number of DEM steps (explicit dynamics of the macro scale).
+   * exactly a number of DEM steps (explicit dynamics of the macro scale);
+   * with a cap (SolveBudget::max_steps) beyond which a solve fails.
    */
   virtual void set_budget(const SolveBudget& budget) = 0;
-  /**
-   * Testing: makes the next solve fail with @p fault. A step budget lasts
-   * until the next rollback or restore (which bring the template's back).
-   */
-  virtual void inject_fault(RveFault fault) = 0;
 
   /// Accepts the current state as the converged load step.
   virtual void commit() = 0;

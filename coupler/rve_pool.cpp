@@ -1,4 +1,5 @@
 #include "rve_pool.h"
+#include "fault_injecting_rve.h"
 
 #include <algorithm>
 #include <climits>
@@ -253,7 +254,7 @@ template <int dim>
 void RvePool<dim>::inject_fault(std::size_t k, RveFault fault)
 {
   if (owner_.at(k) == rank_)
-    local_.at(k)->inject_fault(fault);
+    local_.at(k) = std::make_unique<FaultInjectingRve<dim>>(std::move(local_.at(k)), fault);
 }
 
 template <int dim>

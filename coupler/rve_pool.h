@@ -111,7 +111,8 @@ public:
 
   /**
    * Testing: the next solve of RVE @p k fails with @p fault (on its owner;
-   * no communication; Rve::inject_fault). Not part of the saved state.
+   * no communication): wraps it in a FaultInjectingRve (fault_injecting_rve.h).
+   * Not part of the saved state.
    */
   void inject_fault(std::size_t k, RveFault fault);
 

@@ -56,7 +56,7 @@ enum class HistoryMode
 /// Faults tests inject into an RVE's next solve (subsection Faults of fe2dem).
 enum class RveFault
 {
-  step_budget,   ///< a step budget of 1: the solve ends without convergence
-  liggghts_error ///< F11 of the next solve times 1e10: LIGGGHTS loses particles and raises an error
+  step_budget,   ///< a cap of 1 DEM step: the solve fails as over budget
+  liggghts_error ///< F11 of the next solve + 1e10: LIGGGHTS loses particles and raises an error
 };
 } // namespace fe2dem

@@ -149,7 +149,6 @@ void ServoRve<dim>::open_instance(const std::string& restart_file)
   fix_ = &instance_->fix<Fix>(setup_.fix_id);
   full_setup_next_ = true;
   budget_ = fix_->max_steps();
-  limited_ = false; // a new instance has the template's budget
 }
 
 template <int dim>
@@ -159,12 +158,12 @@ const typename ServoRve<dim>::Result& ServoRve<dim>::solve(const Matrix& F, long
     rollback();
   at_committed_state_ = false;
   continuous_last_ = false;
-  const bool continuous = solve_budget_.timed_steps() == 0 && !stretch_next_ && setup_.solve_drive == SolveDrive::continuous;
+  const bool continuous = solve_budget_.timed_steps() == 0 && setup_.solve_drive == SolveDrive::continuous;
   if (continuous && step_limit > 0)
     throw std::logic_error("ServoRve::solve: a step limit with 'Solve drive' = continuous (multiple "
                            "time stepping drives the RVE at the pace of the macro iterations; fe2dem "
                            "refuses the combination)");
-  const bool bounded = solve_budget_.timed_steps() == 0 && limit_steps(step_limit);
+  const bool bounded = limit_steps(solve_budget_.timed_steps() == 0 ? step_limit : 0);
   if (continuous)
   {
     solve_continuously(F);
@@ -172,11 +171,7 @@ const typename ServoRve<dim>::Result& ServoRve<dim>::solve(const Matrix& F, long
   }
   if (fix_->timed_steps() != solve_budget_.timed_steps())
     fix_->set_timed_steps(solve_budget_.timed_steps());
-  Matrix applied = F;
-  if (stretch_next_)
-    applied[0] *= 1e10;
-  stretch_next_ = false;
-  fix_->set_deformation(applied);
+  fix_->set_deformation(F);
   run_until_done(bounded);
   return fix_->result();
 }
@@ -273,37 +268,20 @@ void ServoRve<dim>::publish(const TimedTally& tally)
   continuous_last_ = true;
 }
 
+// The fix's max_steps for the next solve: a bound of a bounded solve (the
+// state as it is at the bound), else the cap of set_budget (a failure
+// beyond it), else the template's budget.
 template <int dim>
 bool ServoRve<dim>::limit_steps(long step_limit)
 {
   const long every = fix_->check_interval();
   const long limit = (step_limit + every - 1) / every * every;
-  const bool bounded = step_limit > 0 && limit < budget_;
-  // Touch max_steps only for bounded solves and to undo them, so that a
-  // budget set from outside (set_step_budget, fix_modify) stays.
-  if (bounded || limited_)
-  {
-    const long steps = bounded ? limit : budget_;
-    if (fix_->max_steps() != steps)
-      fix_->set_max_steps(steps);
-  }
-  limited_ = bounded;
+  const long cap = solve_budget_.max_steps > 0 ? solve_budget_.max_steps : budget_;
+  const bool bounded = step_limit > 0 && limit < cap;
+  const long steps = bounded ? limit : cap;
+  if (fix_->max_steps() != steps)
+    fix_->set_max_steps(steps);
   return bounded;
-}
-
-template <int dim>
-void ServoRve<dim>::set_step_budget(long steps)
-{
-  fix_->set_max_steps(steps);
-}
-
-template <int dim>
-void ServoRve<dim>::inject_fault(RveFault fault)
-{
-  if (fault == RveFault::step_budget)
-    set_step_budget(1);
-  else
-    stretch_next_ = true;
 }
 
 template <int dim>

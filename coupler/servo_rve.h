@@ -87,9 +87,6 @@ public:
   const RveResponse<dim>& response() const override;
   /// Timed steps go to the fix (FixRveServo::set_timed_steps) at every solve, restored instances included.
   void set_budget(const SolveBudget& budget) override { solve_budget_ = budget; }
-  void inject_fault(RveFault fault) override;
-  /// Overrides the step budget after which a solve fails, until the next rollback or restore.
-  void set_step_budget(long steps);
   /// Accepts the current state as the converged load step.
   void commit() override;
   /// Returns exactly to the last committed state.
@@ -167,11 +164,9 @@ private:
   Fix* fix_ = nullptr;
   double last_seconds_ = 0.0;
   double last_loop_seconds_ = 0.0;
-  long budget_ = 0;      ///< the template's step budget (max_steps), restored after bounded solves
-  bool limited_ = false; ///< the fix's max_steps is currently a bound of limit_steps()
+  long budget_ = 0;      ///< the template's step budget (max_steps), restored after bounded or capped solves
   bool last_converged_ = true;
   SolveBudget solve_budget_;          ///< of set_budget()
-  bool stretch_next_ = false;         ///< inject_fault(RveFault::liggghts_error) pending
   mutable RveResponse<dim> response_;   ///< rve_to_macro of the fix's result
   bool continuous_last_ = false;        ///< the last solve was a continuous one
   Result continuous_result_;            ///< its result (result())

@@ -13,6 +13,9 @@
  *    continuous feedback, stresses averaged over the solve's checks.
  *    @pre n is a multiple of the RVE's check interval.
  *
+ * Any of them may carry a cap, max_steps: a solve that would run more DEM
+ * steps fails as over budget (0, the default: the template's 'Step budget').
+ *
  * Plain data: the macro solver uses it without LIGGGHTS.
  */
 #pragma once
@@ -31,7 +34,8 @@ struct SolveBudget
     timed
   };
   Kind kind = Kind::converge;
-  long steps = 0; ///< DEM steps of bounded and timed solves
+  long steps = 0;     ///< DEM steps of bounded and timed solves
+  long max_steps = 0; ///< a cap beyond which a solve fails (0: the template's 'Step budget')
 
   static SolveBudget converge() { return {}; }
   static SolveBudget bounded(long n) { return make(Kind::bounded, n); }

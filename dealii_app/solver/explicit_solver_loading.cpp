@@ -149,8 +149,7 @@ unsigned int ExplicitSolver<dim>::solve_load_step()
 }
 
 // Testing only (subsection Faults): the material makes the IP's next solve
-// fail (an RVE gets a step budget of 1; the instance rebuilt by a rollback
-// has the template's budget again).
+// fail (coupler/fault_injecting_rve.h).
 template <int dim>
 void ExplicitSolver<dim>::inject_fault_if_due(bool first_attempt)
 {

@@ -49,12 +49,12 @@ run_macro() {
   rm -rf "$dir/out/checkpoints" "$dir"/out/*.vtu "$dir"/out/*.pvd
   echo "$1: $(cat "$dir/wall_s") s on $np rank(s)"
 }
-# run_rve NAME PRM: fe2dem-rve into results/NAME
+# run_rve NAME PRM [sed expression]: fe2dem-rve into results/NAME
 run_rve() {
-  local dir="$results/$1" prm=$2
+  local dir="$results/$1" prm=$2 edit=${3:-}
   [[ -f "$dir/rve.csv" && -f "$dir/wall_s" ]] && return
   rm -rf "$dir"; mkdir -p "$dir"
-  rebase "$prm" > "$dir/case.prm"
+  rebase "$prm" | sed "$edit" > "$dir/case.prm"
   local t0=$SECONDS
   "$build/dealii_app/rve_driver/fe2dem-rve" "$dir/case.prm" --output-directory "$dir" > "$dir/run.log"
   echo $((SECONDS - t0)) > "$dir/wall_s"
@@ -139,6 +139,8 @@ problem1() {
   run_rve problem1_shear_rve "$here/problem1_shear_rve.prm" &
   run_macro problem1_shear_dynamic "$here/problem1_shear_dynamic.prm" 1
   wait
+  # the single RVE set as the dynamic element's ('Inner start' = affine)
+  run_rve problem1_shear_rve_affine "$here/problem1_shear_rve.prm" "s#^\(  set Friction .*\)#\1\n  set Inner start = affine#"
   run_rve problem1_triaxial_rve_stepped "$here/problem1_triaxial_rve_stepped.prm" &
   run_macro problem1_triaxial_quasi_static "$here/problem1_triaxial_quasi_static.prm" 1
   wait
@@ -152,6 +154,9 @@ problem1_tables() {
     echo "# [LSYF] problem 1, simple shear: dynamic one element against fe2dem-rve"
     $py "$root/tests/compare_rve_stress.py" "$results/problem1_shear_dynamic/out/history.h5" \
       "$results/problem1_shear_rve/rve.csv" 3 0.02 0.02 || true
+    echo "# [LSYF] problem 1, simple shear: against fe2dem-rve with 'Inner start' = affine (as the element)"
+    $py "$root/tests/compare_rve_stress.py" "$results/problem1_shear_dynamic/out/history.h5" \
+      "$results/problem1_shear_rve_affine/rve.csv" 3 0.02 0.02 || true
     echo "# [LSYF] problem 1, triaxial, quasi-static one element against fe2dem-rve stepped (the same 0.25 % steps)"
     $py "$root/tests/compare_triaxial.py" "$results/problem1_triaxial_quasi_static/out/history.h5" \
       "$results/problem1_triaxial_rve_stepped/rve.csv" 3 0.02 || true

@@ -3,8 +3,9 @@
 namespace fe2dem
 {
 template <int dim>
-FaultInjectingRve<dim>::FaultInjectingRve(std::unique_ptr<Rve<dim>> inner, RveFault fault)
-  : inner_(std::move(inner)), pending_(fault)
+FaultInjectingRve<dim>::FaultInjectingRve(std::unique_ptr<Rve<dim>> inner, RveFault fault,
+                                          const SolveBudget& budget)
+  : inner_(std::move(inner)), pending_(fault), budget_(budget)
 {
 }
 

@@ -28,8 +28,12 @@ class FaultInjectingRve final : public Rve<dim>
 {
 public:
   using Tensor = typename Rve<dim>::Tensor;
-  /// Wraps @p inner; its next solve fails with @p fault.
-  FaultInjectingRve(std::unique_ptr<Rve<dim>> inner, RveFault fault);
+  /**
+   * Wraps @p inner; its next solve fails with @p fault.
+   * @param budget the budget @p inner has now (Rve::set_budget), which a
+   *        step-budget fault caps for one solve and then gives back.
+   */
+  FaultInjectingRve(std::unique_ptr<Rve<dim>> inner, RveFault fault, const SolveBudget& budget);
 
   const RveResponse<dim>& solve(const Tensor& F) override;
   const RveResponse<dim>& solve_increment(const Tensor& d_eps) override;
@@ -53,6 +57,6 @@ private:
 
   std::unique_ptr<Rve<dim>> inner_;
   std::optional<RveFault> pending_;
-  SolveBudget budget_; ///< the budget set from outside, restored after a capped solve
+  SolveBudget budget_; ///< the inner RVE's budget, restored after a capped solve
 };
 } // namespace fe2dem

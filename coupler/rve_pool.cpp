@@ -254,7 +254,7 @@ template <int dim>
 void RvePool<dim>::inject_fault(std::size_t k, RveFault fault)
 {
   if (owner_.at(k) == rank_)
-    local_.at(k) = std::make_unique<FaultInjectingRve<dim>>(std::move(local_.at(k)), fault);
+    local_.at(k) = std::make_unique<FaultInjectingRve<dim>>(std::move(local_.at(k)), fault, budget_);
 }
 
 template <int dim>

@@ -2,9 +2,10 @@
 // line before any instance exists; an exploding RVE raises a CouplerError
 // naming IP, position, load step and reason on every rank; an error raised
 // inside LIGGGHTS becomes an exception (not MPI_Abort), reported the same way,
-// and the RVE goes on from its committed state.
+// and the RVE goes on from its committed state; an injected fault gives the
+// RVE its solve budget back.
 // Usage: [mpirun -np N] test_coupler_failures CASE TEMPLATE PACKING_PREFIX
-//   CASE: broken_template | exploding | liggghts_error
+//   CASE: broken_template | exploding | liggghts_error | injected_fault_keeps_budget
 #include "check.h"
 #include "liggghts_error_trap.h"
 #include "liggghts_instance.h"
@@ -88,6 +89,28 @@ int main(int argc, char** argv)
     const std::vector<RveResponse<2>> after = pool.solve(F);
     check.truth("the rebuilt RVE solves again, as before the error",
                 after[1].sigma == before[1].sigma && after[0].sigma == before[0].sigma);
+  }
+  else if (c == "injected_fault_keeps_budget")
+  {
+    // A step-budget fault caps one solve and gives the RVE its budget back:
+    // under multiple time stepping (bounded solves) the solve after the
+    // fault must be bounded again, not run to convergence.
+    setup.variables["check_every"] = "50";
+    const long bound = 100; // two checks
+    RvePool<2> pool(MPI_COMM_WORLD, factory(), points);
+    pool.set_budget(SolveBudget::bounded(bound));
+    std::vector<Eigen::Matrix2d> F(2, Eigen::Matrix2d::Identity());
+    F[0] << 0.99, 0.0, 0.0, 1.0;
+    F[1] = F[0];
+    pool.inject_fault(1, RveFault::step_budget);
+    check.throws_with("the injected fault fails the solve as over budget, naming the IP", [&] { pool.solve(F); },
+                      "RVE of IP 101");
+    pool.rollback();
+    const std::vector<RveResponse<2>> after = pool.solve(F);
+    check.truth("the faulted RVE's next solve is bounded again", !after[1].converged,
+                "DEM steps " + std::to_string(after[1].statistics.dem_steps));
+    check.truth("... like the other RVE's", after[1].statistics.dem_steps == after[0].statistics.dem_steps,
+                std::to_string(after[1].statistics.dem_steps) + " against " + std::to_string(after[0].statistics.dem_steps));
   }
   else
     check.truth("known case", false, c);

@@ -44,10 +44,10 @@ void record_shm_files()
     if (at == std::string::npos)
       continue;
     const std::string file = line.substr(at);
-    bool known = file.size() >= sizeof shm_files[0];
-    for (int i = 0; i < n_shm_files && !known; ++i)
-      known = file == shm_files[i];
-    if (!known)
+    bool skip = file.size() >= sizeof shm_files[0]; // too long for a buffer
+    for (int i = 0; i < n_shm_files && !skip; ++i)
+      skip = file == shm_files[i]; // mapped more than once
+    if (!skip)
       std::strcpy(shm_files[n_shm_files++], file.c_str());
   }
 }

@@ -2,8 +2,8 @@
 # A second stop signal ends fe2dem at once (issue 39): SIGTERM starts the
 # clean stop (here inside an RVE solve that never converges), SIGINT right
 # after it (a different signal, so the two cannot merge into one pending
-# signal) must end the process with a message and exit status 130 (128 +
-# SIGINT), without a checkpoint, and remove the shared-memory files it had
+# signal) must end the process with a message and exit status 128 + the
+# signal handled second, without a checkpoint, and remove the shared-memory files it had
 # mapped (on 2 ranks Open MPI's segments, which killed runs used to leave in
 # /dev/shm). Its RVE images in /dev/shm are removed by the next run
 # (shm_images_removed). On 2 ranks the signals go to every rank, as a batch
@@ -24,7 +24,9 @@ if kill -0 $pid 2>/dev/null; then kill -KILL $pid; echo "FAIL: still running 30 
 wait $pid; rc=$?
 tail -n 2 stopped.log
 if [[ $np -eq 1 ]]; then
-  [[ $rc -eq 130 ]] || { echo "FAIL: exit code $rc, expected 130 (ended at once by the second signal)"; exit 1; }
+  # 128 + the second signal: SIGINT's 130, or SIGTERM's 143 when both were
+  # pending at once (a busy machine), since Linux delivers the lower number first.
+  [[ $rc -eq 130 || $rc -eq 143 ]] || { echo "FAIL: exit code $rc, expected 130 or 143 (ended at once by the second signal)"; exit 1; }
 else
   [[ $rc -ne 0 ]] || { echo "FAIL: exit code 0"; exit 1; }
 fi

@@ -6,12 +6,13 @@
  * (servo_rve.h) is the LIGGGHTS implementation, made by the factory of
  * servo_rve_factory.h; RvePool holds RVEs only through this interface.
  *
- * @tparam dim 2 (3 once fix rve/servo has a 3D frame).
+ * @tparam dim 2 or 3.
  */
 #pragma once
 
 #include "rve_response.h"
 #include "rve_setup.h"
+#include "rve_solve_error.h"
 #include "solve_budget.h"
 
 #include <Eigen/Dense>
@@ -32,8 +33,9 @@ public:
   /**
    * Relaxes the RVE under macro deformation @p F (det F > 0). In committed
    * history mode the solve starts from the last committed state.
-   * @throws std::runtime_error if the solve fails (no convergence within
-   *         its budget, an escaped particle, a blow-up, an overlap).
+   * @throws RveSolveError if the solve fails (no convergence within its
+   *         budget, an escaped particle, a blow-up, an overlap; its status
+   *         says which).
    */
   virtual const RveResponse<dim>& solve(const Tensor& F) = 0;
   /**
@@ -47,9 +49,10 @@ public:
   /**
    * How far later solves may go (solve_budget.h): to convergence (the
    * default), bounded by a number of DEM steps (multiple time stepping,
-   * [LSYF] Eq. 66: the state as it is, RveResponse::converged false), or
-   * exactly a number of DEM steps (explicit dynamics of the macro scale);
-   * with a cap (SolveBudget::max_steps) beyond which a solve fails.
+   * [LSYF] Eq. 66: the state as it is, RveResponse::converged false),
+   * exactly a number of DEM steps (explicit dynamics of the macro scale),
+   * or held at F until at rest; with a cap (SolveBudget::max_steps) beyond
+   * which a solve fails.
    */
   virtual void set_budget(const SolveBudget& budget) = 0;
 

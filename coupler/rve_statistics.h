@@ -31,7 +31,18 @@
   X(scalar, packing_fraction, "1", "solid area fraction of the periodic cell", r.packing_fraction)   \
   X(scalar, residual, "1", "servo residual r_a (R14) at the end of the solve", r.residual)           \
   X(scalar, ekin_epot, "1", "E_kin/E_pot of the inner particles (R12) at the end of the solve", r.ekin_epot) \
-  X(scalar, mean_overlap, "1", "mean contact overlap / smaller radius", r.contacts.mean_overlap)
+  X(scalar, mean_overlap, "1", "mean contact overlap / smaller radius", r.contacts.mean_overlap)    \
+  X(scalar, max_overlap, "1", "largest contact overlap / smaller radius", r.contacts.max_overlap)    \
+  X(count, contacts, "1", "contacts C (pairs with positive overlap) at the end of the solve",         \
+    r.contacts.n_contacts)                                                                            \
+  X(count, sliding_contacts, "1", "contacts at the Coulomb limit |f_s| = mu |f_n| (-1: mu unknown)",  \
+    r.contacts.n_sliding)                                                                             \
+  X(scalar, fabric_deviator, "1", "sqrt(dim/(dim-1) Pi':Pi')/tr Pi: 0 isotropic, 1 along one axis",   \
+    fe2dem::fabric_deviator(r.contacts.fabric))                                                       \
+  X(count, membrane_steps, "1", "particle-steps of the last solve with a membrane contact",          \
+    r.membrane_steps)                                                                                 \
+  X(scalar, F_check_error, "1", "|F_check - F|/|F|: F measured on the frame against the imposed F",   \
+    fe2dem::frobenius(r.F_check - r.F) / fe2dem::frobenius(r.F))
 // clang-format on
 
 namespace fe2dem

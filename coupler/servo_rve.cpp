@@ -25,6 +25,16 @@
 
 namespace fe2dem
 {
+// RveSolveError::Status carries the fix's codes across the LIGGGHTS-free edge.
+template <int dim>
+constexpr bool same_status_codes()
+{
+  using Fix = LAMMPS_NS::FixRveServo<dim>;
+  return int{RveSolveError::over_budget} == int{Fix::over_budget} && int{RveSolveError::escaped} == int{Fix::escaped} &&
+         int{RveSolveError::blown_up} == int{Fix::blown_up} && int{RveSolveError::overlapped} == int{Fix::overlapped};
+}
+static_assert(same_status_codes<2>() && same_status_codes<3>());
+
 namespace
 {
 /**
@@ -156,6 +166,11 @@ const typename ServoRve<dim>::Result& ServoRve<dim>::solve(const Matrix& F, long
 {
   if (mode_ == HistoryMode::committed && !at_committed_state_)
     rollback();
+  if (solve_budget_.kind == SolveBudget::Kind::held)
+  {
+    hold_at_rest(F);
+    return result();
+  }
   at_committed_state_ = false;
   continuous_last_ = false;
   const bool continuous = solve_budget_.timed_steps() == 0 && setup_.solve_drive == SolveDrive::continuous;
@@ -206,17 +221,14 @@ void ServoRve<dim>::solve_continuously(const Matrix& F)
 }
 
 template <int dim>
-const typename ServoRve<dim>::Result& ServoRve<dim>::hold_at_rest(const Matrix& F)
+void ServoRve<dim>::hold_at_rest(const Matrix& F)
 {
-  if (solve_budget_.timed_steps() <= 0)
-    throw std::logic_error("ServoRve::hold_at_rest needs timed solves (set_budget(SolveBudget::timed(n)))");
   at_committed_state_ = false;
   continuous_last_ = false;
   TimedTally tally;
   const TimedStepsAgain again{this};
   hold_until_at_rest(F, solve_budget_.timed_steps(), tally);
   publish(tally);
-  return result();
 }
 
 template <int dim>

@@ -24,6 +24,7 @@
 #include "fix_rve_servo.h"
 #include "liggghts_instance.h"
 #include "rve.h"
+#include "rve_solve_error.h"
 #include "rve_setup.h"
 
 #include <memory>
@@ -33,17 +34,6 @@
 
 namespace fe2dem
 {
-/// An RVE solve that ended without convergence.
-class RveSolveError : public std::runtime_error
-{
-public:
-  /// status of a solve in which LIGGGHTS itself raised an error
-  static constexpr int liggghts_error = -1;
-  RveSolveError(int s, const std::string& what) : std::runtime_error(what), status(s) {}
-  /// a FixRveServo<dim>::Status (the same values in 2D and 3D), or liggghts_error
-  int status;
-};
-
 /// @tparam dim 2 or 3: the template's `dimension` (FixRveServo<dim>).
 template <int dim>
 class ServoRve : public Rve<dim>
@@ -75,6 +65,7 @@ public:
    * check interval, so that it ends on a check) and returns the state it
    * stopped in, homogenised there, if it has not converged by then
    * (last_solve_converged() false). 0: run until the fix's step budget.
+   * Under a timed or held budget (set_budget) @p step_limit is not used.
    */
   const Result& solve(const Matrix& F, long step_limit = 0);
   /// false if the last solve stopped at its step limit before converging.
@@ -101,20 +92,10 @@ public:
   double last_solve_loop_seconds() const override { return last_loop_seconds_; }
   void write_particles(const std::string& prefix, long timestep) const override;
 
-  /// The last solve's result; after a continuous solve (RveSetup::solve_drive) or hold_at_rest() that
+  /// The last solve's result; after a continuous solve (RveSetup::solve_drive) or a held one that
   /// of its last timed solve, with dem_steps and membrane_steps summed over all and servo_iterations =
   /// their number.
   const Result& result() const { return continuous_last_ ? continuous_result_ : fix_->result(); }
-  /**
-   * Holds the RVE at @p F: timed solves of the set_budget() steps, the
-   * servo acting at every check, until the fix's quasi-static test passes
-   * at the end of one (FixRveServo::at_rest(): relaxed and balanced).
-   * result() is then the last one's, with dem_steps and membrane_steps
-   * summed over all and servo_iterations = their number.
-   * @pre set_budget(SolveBudget::timed(n)).
-   * @throws RveSolveError (over budget) if not at rest within the step budget.
-   */
-  const Result& hold_at_rest(const Matrix& F);
   Fix& fix() { return *fix_; }
   LiggghtsInstance& instance() { return *instance_; }
   HistoryMode history_mode() const { return mode_; }
@@ -128,6 +109,15 @@ private:
   ServoRve(const RveSetup& setup, HistoryMode mode, const std::string& restart_file, FromRestart);
   void open_instance(const std::string& restart_file);
   void run_until_done(bool bounded = false);
+  /**
+   * A solve under SolveBudget::held(n): timed solves of n steps at @p F,
+   * the servo acting at every check, until the fix's quasi-static test
+   * passes at the end of one (FixRveServo::at_rest(): relaxed and
+   * balanced). result() is then the last one's, with dem_steps and
+   * membrane_steps summed over all and servo_iterations = their number.
+   * @throws RveSolveError (over budget) if not at rest within the step budget.
+   */
+  void hold_at_rest(const Matrix& F);
   /// solve() with SolveDrive::continuous: approach F at the solve strain rate, hold until at rest.
   void solve_continuously(const Matrix& F);
   /// DEM steps, membrane steps and timed solves of a continuous solve or a hold, so far.

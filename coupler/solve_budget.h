@@ -12,6 +12,11 @@
  *    over the DEM step), the frame moving to the new F with the servo as a
  *    continuous feedback, stresses averaged over the solve's checks.
  *    @pre n is a multiple of the RVE's check interval.
+ *  - held(n): the strain held: timed solves of n DEM steps at the same F,
+ *    the servo acting at every check, until the RVE is at rest (relaxed
+ *    and balanced at the end of one), as a periodic cell held at fixed
+ *    strain (fe2dem-rve's 'Hold rows'); over budget if it never is.
+ *    @pre as timed(n).
  *
  * Any of them may carry a cap, max_steps: a solve that would run more DEM
  * steps fails as over budget (0, the default: the template's 'Step budget').
@@ -31,7 +36,8 @@ struct SolveBudget
   {
     converge,
     bounded,
-    timed
+    timed,
+    held
   };
   Kind kind = Kind::converge;
   long steps = 0;     ///< DEM steps of bounded and timed solves
@@ -40,17 +46,18 @@ struct SolveBudget
   static SolveBudget converge() { return {}; }
   static SolveBudget bounded(long n) { return make(Kind::bounded, n); }
   static SolveBudget timed(long n) { return make(Kind::timed, n); }
+  static SolveBudget held(long n) { return make(Kind::held, n); }
 
   /// The step limit of a bounded solve (0: none).
   long step_limit() const { return kind == Kind::bounded ? steps : 0; }
-  /// The DEM steps of a timed solve (0: not timed).
-  long timed_steps() const { return kind == Kind::timed ? steps : 0; }
+  /// The DEM steps of each timed solve, of a timed or a held budget (0: neither).
+  long timed_steps() const { return kind == Kind::timed || kind == Kind::held ? steps : 0; }
 
 private:
   static SolveBudget make(Kind kind, long n)
   {
     if (n <= 0)
-      throw std::invalid_argument("SolveBudget: a bounded or timed solve needs a number of DEM steps > 0, not " +
+      throw std::invalid_argument("SolveBudget: a bounded, timed or held solve needs a number of DEM steps > 0, not " +
                                   std::to_string(n));
     return {kind, n};
   }

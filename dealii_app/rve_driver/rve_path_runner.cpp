@@ -1,7 +1,6 @@
 #include "rve_path_runner.h"
 
-#include "rve_homogenisation.h"
-#include "template_check.h"
+#include "servo_rve_factory.h"
 
 #include <mpi.h>
 
@@ -17,12 +16,13 @@ namespace fe2dem::rve_driver
 {
 namespace
 {
-/// Checks the packing and the template (in a child process) first: LIGGGHTS would exit(1).
+/// The RVE, after its packing and template were checked (in a child process: LIGGGHTS would exit(1)).
 template <int dim>
-RveSetup checked(const RveSetup& setup)
+std::unique_ptr<Rve<dim>> make_rve(const RveSetup& setup)
 {
-  check_rve_template(setup, dim);
-  return setup;
+  const auto factory = make_servo_rve_factory<dim>(setup, HistoryMode::continuous);
+  factory->check();
+  return factory->create();
 }
 
 /// Row-major indices of the diagonal and of the upper off-diagonal components.
@@ -54,7 +54,7 @@ template <int dim>
 RvePathRunner<dim>::RvePathRunner(const Parameters& parameters)
   : axial(dim == 2 ? 3 : parameters.path.axial_y ? 4 : 8),
     lateral(parameters.path.axial_y ? std::array<int, 2>{{0, 8}} : std::array<int, 2>{{0, 4}}),
-    prm_(parameters), rve_(checked<dim>(parameters.rve.setup("none")))
+    prm_(parameters), rve_(make_rve<dim>(parameters.rve.setup("none")))
 {
   // A first guess of the stiffness d sigma / d F; the secant iteration
   // corrects it after the first trial. 2D: ~ k_n (stress in N/m). 3D (Pa):
@@ -65,9 +65,9 @@ RvePathRunner<dim>::RvePathRunner(const Parameters& parameters)
   double k = prm_.rve.kn;
   if constexpr (dim == 3)
   {
-    const Result& r = rve_.result();
+    const Response& r = rve_->response();
     const double mean = std::abs(r.sigma[0] + r.sigma[4] + r.sigma[8]) / 3.0;
-    k = 2.0 * std::max(mean, 1.0) / std::max(r.contacts.mean_overlap, 1e-6);
+    k = 2.0 * std::max(mean, 1.0) / std::max(r.statistics.mean_overlap, 1e-6);
   }
   slope_iso_ = dim * k;
   slope_lateral_ = k;
@@ -100,28 +100,26 @@ void RvePathRunner<dim>::open_output()
 }
 
 template <int dim>
-void RvePathRunner<dim>::write_row(const Result& r, unsigned int stress_iterations)
+void RvePathRunner<dim>::write_row(const Response& r, unsigned int stress_iterations)
 {
+  const RveStatistics<dim>& s = r.statistics;
   csv_ << step_;
-  for (const Matrix* t : {&r.F, &r.P, &r.sigma, &r.sigma_lw})
+  for (const Matrix* t : {&r.F, &r.P, &r.sigma, &s.sigma_lw})
     for (double v : *t)
       csv_ << ',' << v;
-  const double F_check_error = frobenius(r.F_check - r.F) / frobenius(r.F);
-  csv_ << ',' << r.residual << ',' << r.ekin_epot << ',' << r.servo_iterations << ','
-       << dem_steps_in_step_ << ',' << r.contacts.coordination << ',' << r.contacts.anisotropy
-       << ',' << r.packing_fraction << ',' << MPI_Wtime() - t_start_ << ','
-       << r.contacts.mechanical_coordination << ',' << r.contacts.n_contacts << ','
-       << r.contacts.n_sliding << ',' << r.contacts.max_overlap << ',' << F_check_error << ','
-       << stress_iterations << ',' << membrane_steps_in_step_ << ','
-       << fe2dem::fabric_deviator(r.contacts.fabric) << ',' << drive_time_ << ',' << control_error_
-       << '\n';
+  csv_ << ',' << s.residual << ',' << s.ekin_epot << ',' << s.servo_iterations << ',' << dem_steps_in_step_
+       << ',' << s.coordination << ',' << s.anisotropy << ',' << s.packing_fraction << ','
+       << MPI_Wtime() - t_start_ << ',' << s.mechanical_coordination << ',' << s.contacts << ','
+       << s.sliding_contacts << ',' << s.max_overlap << ',' << s.F_check_error << ',' << stress_iterations
+       << ',' << membrane_steps_in_step_ << ',' << s.fabric_deviator << ',' << drive_time_ << ','
+       << control_error_ << '\n';
   csv_.flush();
   const char* axial_name = axial == 8 ? "33" : "22";
   std::cout << "step " << std::setw(3) << step_ << "  F11 " << std::setw(9) << r.F[0] << "  F"
             << axial_name << " " << std::setw(9) << r.F[axial] << "  F12 " << std::setw(9) << r.F[1]
             << "  sigma11 " << std::setw(11) << r.sigma[0] << "  sigma" << axial_name << " "
             << std::setw(11) << r.sigma[axial]
-            << "  DEM steps " << std::setw(8) << dem_steps_in_step_ << "  r_a " << r.residual
+            << "  DEM steps " << std::setw(8) << dem_steps_in_step_ << "  r_a " << s.residual
             << std::endl;
   ++step_;
   dem_steps_in_step_ = 0;
@@ -129,29 +127,33 @@ void RvePathRunner<dim>::write_row(const Result& r, unsigned int stress_iteratio
 }
 
 template <int dim>
-const typename RvePathRunner<dim>::Result& RvePathRunner<dim>::solve(const Matrix& F, bool hold)
+void RvePathRunner<dim>::set_budget(const SolveBudget& budget)
+{
+  budget_ = budget;
+  rve_->set_budget(budget);
+}
+
+template <int dim>
+const typename RvePathRunner<dim>::Response& RvePathRunner<dim>::solve(const Matrix& F)
 {
   try
   {
-    if (hold)
-      rve_.hold_at_rest(F);
-    else
-      rve_.solve(F);
+    rve_->solve(rve_to_macro<dim>(F));
   }
-  catch (const fe2dem::RveSolveError& e)
+  catch (const RveSolveError& e)
   {
     // Name the step; the rows before it are complete and stay. A solve that
     // ran out of steps because the packing never met the relaxation
     // criterion (small_3d, 'Isotropic steps' = 1, 'Inner start' = affine:
     // E_kin/E_pot stayed at 1.05e-3 for 4e6 steps, issue 35) gets the
     // settings measured to get past it.
-    const Result& r = rve_.result();
-    const bool never_relaxed = e.status == Fix::over_budget && rve_.fix().timed_steps() == 0 &&
+    const double ekin_epot = rve_->response().statistics.ekin_epot;
+    const bool never_relaxed = e.status == RveSolveError::over_budget && budget_.timed_steps() == 0 &&
                                prm_.rve.solve_drive != "continuous" &&
                                prm_.rve.relaxation_criterion == "ekin_epot" &&
-                               r.ekin_epot > prm_.rve.relaxation_tolerance;
+                               ekin_epot > prm_.rve.relaxation_tolerance;
     const std::string hint =
-      never_relaxed ? ". The packing never relaxed: E_kin/E_pot = " + std::to_string(r.ekin_epot) +
+      never_relaxed ? ". The packing never relaxed: E_kin/E_pot = " + std::to_string(ekin_epot) +
                         " > 'Relaxation tolerance' = " + std::to_string(prm_.rve.relaxation_tolerance) +
                         "; 'Solve drive' = continuous or 'Inner start' = keep get past this (measured on "
                         "small_3d), or raise 'Relaxation tolerance'"
@@ -161,26 +163,26 @@ const typename RvePathRunner<dim>::Result& RvePathRunner<dim>::solve(const Matri
                              (step_ == 0 ? std::string(". rve.csv holds no step")
                                          : ". rve.csv holds steps 0 to " + std::to_string(step_ - 1)));
   }
-  const Result& r = rve_.result();
-  dem_steps_in_step_ += r.dem_steps;
-  membrane_steps_in_step_ += r.membrane_steps;
+  const Response& r = rve_->response();
+  dem_steps_in_step_ += r.statistics.dem_steps;
+  membrane_steps_in_step_ += r.statistics.membrane_steps;
   return r;
 }
 
 template <int dim>
 unsigned int RvePathRunner<dim>::control_stress(double& x, double target, double& slope,
                                            const std::function<Matrix(double)>& make_F,
-                                           const std::function<double(const Result&)>& stress,
+                                           const std::function<double(const Response&)>& stress,
                                            const std::string& what)
 {
-  double f0 = stress(rve_.result());
+  double f0 = stress(rve_->response());
   const double tol = prm_.path.stress_tolerance * std::max(std::abs(target), 1e-12);
   for (unsigned int it = 1; it <= prm_.path.max_stress_iterations; ++it)
   {
     double dx = (target - f0) / slope;
     dx = std::clamp(dx, -0.01, 0.01); // at most 1 % strain per trial
     const double x1 = x + dx;
-    const Result& r = solve(make_F(x1));
+    const Response& r = solve(make_F(x1));
     const double f1 = stress(r);
     if (x1 != x && (f1 - f0) / (x1 - x) > 0.0)
       slope = (f1 - f0) / (x1 - x);
@@ -204,24 +206,24 @@ unsigned int RvePathRunner<dim>::control_components(Matrix& F, const std::vector
   const double scale = std::max(prm_.path.pressure, 1e-12);
   const double tol = prm_.path.stress_tolerance * scale;
   Matrix F_prev = F;
-  Matrix s_prev = rve_.result().sigma;
+  Matrix s_prev = rve_->response().sigma;
   bool first = true;
   for (unsigned int it = 1; it <= prm_.path.max_stress_iterations; ++it)
   {
     // secant slope per component from the last change, if it has the right sign
     if (!first && !(F_moved_elsewhere && it == 2))
       for (int c : comps)
-        if (F[c] != F_prev[c] && (rve_.result().sigma[c] - s_prev[c]) / (F[c] - F_prev[c]) > 0.0)
-          slopes_[c] = (rve_.result().sigma[c] - s_prev[c]) / (F[c] - F_prev[c]);
+        if (F[c] != F_prev[c] && (rve_->response().sigma[c] - s_prev[c]) / (F[c] - F_prev[c]) > 0.0)
+          slopes_[c] = (rve_->response().sigma[c] - s_prev[c]) / (F[c] - F_prev[c]);
     first = false;
     F_prev = F;
-    s_prev = rve_.result().sigma;
+    s_prev = rve_->response().sigma;
     for (std::size_t k = 0; k < comps.size(); ++k)
       F[comps[k]] += std::clamp((targets[k] - s_prev[comps[k]]) / slopes_[comps[k]], -0.01, 0.01);
     solve(F);
     bool done = true;
     for (std::size_t k = 0; k < comps.size(); ++k)
-      done = done && std::abs(rve_.result().sigma[comps[k]] - targets[k]) <= tol;
+      done = done && std::abs(rve_->response().sigma[comps[k]] - targets[k]) <= tol;
     if (done)
       return it;
   }
@@ -252,7 +254,7 @@ void RvePathRunner<dim>::run_isotropic_stage()
       }
       const unsigned int its = control_components(
         F_, comps, targets, prm_.path.free_shear ? diag_names + " and the shear stresses" : diag_names);
-      write_row(rve_.result(), its);
+      write_row(rve_->response(), its);
     }
     return;
   }
@@ -269,7 +271,7 @@ void RvePathRunner<dim>::run_isotropic_stage()
     const double target = -prm_.path.pressure * k / n;
     const unsigned int its = control_stress(
       lambda, target, slope_iso_, isotropic,
-      [](const Result& r) {
+      [](const Response& r) {
         double trace = r.sigma[0];
         for (int i = 1; i < dim; ++i)
           trace += r.sigma[i * (dim + 1)];
@@ -277,7 +279,7 @@ void RvePathRunner<dim>::run_isotropic_stage()
       },
       "the mean stress");
     F_ = isotropic(lambda);
-    write_row(rve_.result(), its);
+    write_row(rve_->response(), its);
   }
 }
 
@@ -319,7 +321,7 @@ void RvePathRunner<dim>::run_biaxial_stage()
                                  true);
       else
         solve(F_);
-      write_row(rve_.result(), its);
+      write_row(rve_->response(), its);
       continue;
     }
     if (prm_.path.free_shear)
@@ -327,7 +329,7 @@ void RvePathRunner<dim>::run_biaxial_stage()
       F_[axial] = F_axial;
       const unsigned int its =
         control_components(F_, {0, 1}, {-prm_.path.pressure, 0.0}, "sigma11, sigma12");
-      write_row(rve_.result(), its);
+      write_row(rve_->response(), its);
       continue;
     }
     unsigned int its = 0;
@@ -335,11 +337,11 @@ void RvePathRunner<dim>::run_biaxial_stage()
       its = control_stress(
         F11, -prm_.path.pressure, slope_lateral_,
         [F_axial](double f) { return Matrix{{f, 0.0, 0.0, F_axial}}; },
-        [](const Result& r) { return r.sigma[0]; }, "the lateral stress sigma11");
+        [](const Response& r) { return r.sigma[0]; }, "the lateral stress sigma11");
     else
       solve(Matrix{{F11, 0.0, 0.0, F_axial}});
     F_ = {{F11, 0.0, 0.0, F_axial}};
-    write_row(rve_.result(), its);
+    write_row(rve_->response(), its);
   }
 }
 
@@ -355,7 +357,7 @@ void RvePathRunner<dim>::run_shear_stage()
       solve(F_);
     else
       its = control_components(F_, comps, targets, "the normal stress sigma22", true);
-    write_row(rve_.result(), its);
+    write_row(rve_->response(), its);
   }
 }
 
@@ -368,7 +370,7 @@ void RvePathRunner<dim>::run_table()
     Matrix F;
     std::copy(row.begin(), row.end(), F.begin());
     solve(F);
-    write_row(rve_.result(), 0);
+    write_row(rve_->response(), 0);
   }
 }
 
@@ -377,9 +379,9 @@ void RvePathRunner<dim>::run()
 {
   t_start_ = MPI_Wtime();
   open_output();
-  dem_steps_in_step_ = rve_.result().dem_steps;
-  membrane_steps_in_step_ = rve_.result().membrane_steps;
-  write_row(rve_.result(), 0); // the relaxed packing at F = I
+  dem_steps_in_step_ = rve_->response().statistics.dem_steps;
+  membrane_steps_in_step_ = rve_->response().statistics.membrane_steps;
+  write_row(rve_->response(), 0); // the relaxed packing at F = I
   const std::string& type = prm_.path.type;
   if (type == "table")
     run_table();

@@ -11,12 +11,17 @@
  * corrections. Continuous drive (rve_path_runner_continuous.cpp): the loading
  * stage runs at a constant strain rate as timed solves, the stress-controlled
  * components following by rate control (rate_stress_control.h).
+ *
+ * The RVE is held through the LIGGGHTS-free interface of rve.h (ctest
+ * layers_rve_driver_without_liggghts), as fe2dem holds its RVEs: what the
+ * rows report is RveResponse and its statistics.
  */
 #pragma once
 
 #include "output_lock.h"
 #include "path_parameters.h"
-#include "servo_rve.h"
+#include "rve.h"
+#include "rve_tensor.h"
 
 #include <cmath>
 #include <fstream>
@@ -35,15 +40,14 @@ public:
   void run();
 
 private:
-  using Result = typename ServoRve<dim>::Result;
-  using Fix = typename ServoRve<dim>::Fix;
-  using Matrix = Mat<dim>;
+  using Response = RveResponse<dim>;
+  using Matrix = Mat<dim>; ///< row-major dim x dim, as RveResponse's tensors
   /// Row-major index of the axial F component: F22 in 2D, F33 (or F22 with 'Axial direction' = y) in 3D.
   const int axial;
   /// 3D: the row-major indices of the two lateral normal components.
   const std::array<int, 2> lateral;
   void open_output();
-  void write_row(const Result& r, unsigned int stress_iterations);
+  void write_row(const Response& r, unsigned int stress_iterations);
   void run_isotropic_stage();
   void run_biaxial_stage();
   void run_shear_stage();
@@ -59,7 +63,7 @@ private:
    */
   unsigned int control_stress(double& x, double target, double& slope,
                               const std::function<Matrix(double)>& make_F,
-                              const std::function<double(const Result&)>& stress,
+                              const std::function<double(const Response&)>& stress,
                               const std::string& what);
 
   /**
@@ -75,12 +79,14 @@ private:
                                   const std::vector<double>& targets, const std::string& what,
                                   bool F_moved_elsewhere = false);
 
-  /// One RVE solve, or with @p hold ServoRve::hold_at_rest() at F ('Hold rows'); its DEM and
-  /// membrane steps count towards the step's row.
-  const Result& solve(const Matrix& F, bool hold = false);
+  /// One RVE solve under the current budget; its DEM and membrane steps count towards the step's row.
+  const Response& solve(const Matrix& F);
+  /// The budget of the solves from now on (Rve::set_budget), kept to explain a failure.
+  void set_budget(const SolveBudget& budget);
 
   const Parameters& prm_;
-  ServoRve<dim> rve_;
+  std::unique_ptr<Rve<dim>> rve_;
+  SolveBudget budget_; ///< of the solves from now on
   std::unique_ptr<OutputLock> output_lock_; ///< this run owns the output directory
   std::ofstream csv_;
   unsigned int step_ = 0;

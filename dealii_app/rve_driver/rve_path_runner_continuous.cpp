@@ -72,7 +72,7 @@ void RvePathRunner<dim>::run_continuous_stage()
   const double scale = std::max(prm_.path.pressure, 1e-12);
 
   const double F_axial_ic = F_[axial], F12_ic = F_[1];
-  rve_.set_budget(SolveBudget::timed(n));
+  set_budget(SolveBudget::timed(n));
   long interval = 0;
   for (unsigned int row = 1; row <= prm_.path.loading_steps; ++row)
   {
@@ -80,23 +80,27 @@ void RvePathRunner<dim>::run_continuous_stage()
     for (long j = 0; j < per_row; ++j)
     {
       ++interval;
-      control.advance(F_, rve_.result().sigma);
+      control.advance(F_, rve_->response().sigma);
       if (shear)
         F_[1] = F12_ic + interval * d_strain;
       else
         F_[axial] = F_axial_ic * (1.0 - interval * d_strain);
       solve(F_);
       drive_time_ += interval_time;
-      error = control.largest_error(rve_.result().sigma) / scale;
+      error = control.largest_error(rve_->response().sigma) / scale;
     }
     control_error_ = comps.empty() ? 0.0 : error;
     // 'Hold rows': the strain held (the stress-controlled components not
     // corrected), as YADE's cell at rest, until the RVE is at rest
     if (prm_.path.hold_rows > 0 && row % prm_.path.hold_rows == 0)
-      solve(F_, true);
-    write_row(rve_.result(), 0);
+    {
+      set_budget(SolveBudget::held(n));
+      solve(F_);
+      set_budget(SolveBudget::timed(n));
+    }
+    write_row(rve_->response(), 0);
   }
-  rve_.set_budget(SolveBudget::converge());
+  set_budget(SolveBudget::converge());
 }
 
 // The rest of the class is instantiated in rve_path_runner.cpp.

@@ -28,8 +28,10 @@ namespace
 // 3: energy.csv rows, the energy balance and the state of explicit dynamics;
 // 4: summary rows with the column rve_iteration_max_s (a resumed run writes
 //    the checkpoint's rows first, so they must have the columns of this one);
-// 5: /step_increment, the start of the next step with 'Predictor = extrapolate'.
-constexpr int format_version = 5;
+// 5: /step_increment, the start of the next step with 'Predictor = extrapolate';
+// 6: the IP state with the statistics fe2dem-rve reports (contacts, sliding
+//    contacts, max_overlap, fabric_deviator, membrane_steps, F_check_error).
+constexpr int format_version = 6;
 
 void check(herr_t status, const std::string& what, const std::string& file)
 {

@@ -100,6 +100,7 @@
 #include "membrane_2d.h"
 #include "membrane_3d.h"
 #include "rve_homogenisation.h"
+#include "servo_controller.h"
 
 #include <array>
 #include <cstdio>
@@ -214,7 +215,7 @@ public:
   /// Forces a_q the frame applied in the last step, in frame order.
   const std::vector<Vector>& frame_forces() const { return frame_force_; }
   /// Frame fluctuations w per group (edge pair in 2D; face pair or edge group in 3D).
-  const std::vector<Vector>& fluctuations() const { return w_; }
+  const std::vector<Vector>& fluctuations() const { return servo_.w; }
   /// Current rotation of each frame particle, in frame order.
   const std::vector<Rotation>& frame_rotations() const { return theta_frame_; }
   /**
@@ -288,10 +289,6 @@ private:
   Tensor timed_velocity_gradient() const;
   /// A check of a timed solve: homogenise, filter, finish at its last step.
   void timed_check(long step);
-  /// timed_servo integral: @p value moved from @p before by a servo correction also
-  /// takes the running mean @p drift of the recent moves, which it then updates.
-  template <class T>
-  static void carry_drift(T& value, const T& before, T& drift);
   /// The contact of contacts_ with the largest overlap, for messages.
   std::string describe_largest_overlap() const;
   /// Stops with an error if the packing's centres do not fit the dimension (z = 0 in 2D).
@@ -341,7 +338,6 @@ private:
   double alpha_ = 0.7, beta_ = 0.7;
   bool lock_rotation_ = false;
   double inertia_factor_ = dim == 2 ? 0.5 : 0.4;
-  double gain_a_ = 5.0, gain_m_ = 10.0;
   bool criterion_unbalanced_ = false;
   double relax_tol_ = 1e-3;
   double servo_tol_ = 1e-4;
@@ -362,27 +358,9 @@ private:
   double area_particles_ = 0.0; ///< particle area (3D: volume) inside the periodic cell
   fe2dem::ContactLaw law_;
 
-  // servo unknowns: fluctuation and rotation per group; common corner rotation
-  std::vector<Vector> w_;
-  std::vector<Rotation> theta_pair_;
-  Rotation theta_corner_{};
-  template <class T>
-  static T ones()
-  {
-    T v;
-    v.fill(1.0);
-    return v;
-  }
-  /// Adaptive gain state of one group (or of the corners), per component.
-  struct ServoMemory
-  {
-    Vector force_factor = ones<Vector>();
-    Rotation moment_factor = ones<Rotation>();
-    Vector last_da{};
-    Rotation last_dm{};
-  };
-  std::vector<ServoMemory> servo_memory_;
-  ServoMemory servo_memory_corner_;
+  // the servo's unknowns (fluctuation and rotation per group, the corners'
+  // rotation), its gains and its memory (servo_controller.h)
+  fe2dem::ServoController<dim> servo_;
   std::vector<Rotation> theta_frame_; ///< current rotation of each frame particle
 
   // prescribed frame motion
@@ -424,10 +402,6 @@ private:
   int timed_samples_ = 0;
   Tensor timed_P_sum_{}, timed_sigma_sum_{}, timed_sigma_lw_sum_{};
   Tensor timed_F_from_ = fe2dem::identity<dim>(); ///< F at the start of the timed solve
-  /// timed_servo integral: running means of the recent servo moves per check (restart state)
-  std::vector<Vector> drift_w_;
-  std::vector<Rotation> drift_theta_pair_;
-  Rotation drift_theta_corner_{};
 };
 } // namespace LAMMPS_NS
 

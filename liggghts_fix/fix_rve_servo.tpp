@@ -160,9 +160,7 @@ void FixRveServo<dim>::post_create()
                               : size_of(frame_.particles[frame_.corners[0]].radius);
 
   const std::size_t nq = frame_.particles.size(), ne = frame_.groups.size();
-  w_.assign(ne, Vector{});
-  theta_pair_.assign(ne, Rotation{});
-  servo_memory_.assign(ne, ServoMemory{});
+  servo_.reset(ne);
   theta_frame_.assign(nq, Rotation{});
   frame_force_.assign(nq, Vector{});
   frame_local_.assign(nq, 0);

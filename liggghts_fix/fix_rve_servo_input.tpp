@@ -102,8 +102,8 @@ void FixRveServo<dim>::parse_arguments(int narg, char** arg)
                                                    "particles are spheres (inertia sphere)");
                  }}},
     {"gains", {2, [&](const char* kw, char** v) {
-                 gain_a_ = number(kw, v[0], 0.0, true);
-                 gain_m_ = number(kw, v[1], 0.0, true);
+                 servo_.gain_a = number(kw, v[0], 0.0, true);
+                 servo_.gain_m = number(kw, v[1], 0.0, true);
                }}},
     {"relax", {2, [&](const char* kw, char** v) {
                  criterion_unbalanced_ = !choice(kw, v[0], "ekin_epot", "unbalanced");

@@ -43,11 +43,11 @@ void FixRveServo<dim>::transfer_state(Stream& s, std::uint32_t version)
   s.io(n_inner_);
   s.io(tag_to_dense_);
   // servo unknowns and memory
-  s.io(w_);
-  s.io(theta_pair_);
-  s.io(theta_corner_);
-  s.io(servo_memory_);
-  s.io(servo_memory_corner_);
+  s.io(servo_.w);
+  s.io(servo_.theta_pair);
+  s.io(servo_.theta_corner);
+  s.io(servo_.memory);
+  s.io(servo_.corner_memory);
   s.io(theta_frame_);
   // frame motion in progress
   s.io(move_start_);
@@ -73,9 +73,9 @@ void FixRveServo<dim>::transfer_state(Stream& s, std::uint32_t version)
   s.io(checks_since_contact_pass_);
   if (version >= 4)
   {
-    s.io(drift_w_);
-    s.io(drift_theta_pair_);
-    s.io(drift_theta_corner_);
+    s.io(servo_.drift_w);
+    s.io(servo_.drift_theta_pair);
+    s.io(servo_.drift_theta_corner);
   }
 }
 
@@ -106,9 +106,7 @@ void FixRveServo<dim>::restart(char* buf)
   r.get(version);
   if (magic != state_magic || version < 3 || version > state_version)
     error->fix_error(FLERR, this, "restart data is not from this version of fix rve/servo");
-  drift_w_.clear();
-  drift_theta_pair_.clear();
-  drift_theta_corner_ = Rotation{};
+  servo_.clear_drift(); // version 3 records have none
   transfer_state(r, version);
   for (int k = 0; k < dim; ++k)
     if (std::abs(frame_.L[k] - L_[k]) > 1e-12 * L_[k])

@@ -24,16 +24,7 @@ void FixRveServo<dim>::begin_solve(const Tensor* F)
   F_ = F ? checked_deformation(*F) : evaluate_deformation();
   membrane_.mark_stale(); // its candidate search depends on F
   if (!keep_fluctuations_)
-  {
-    for (auto& w : w_)
-      w = Vector{};
-    for (auto& t : theta_pair_)
-      t = Rotation{};
-    theta_corner_ = Rotation{};
-    drift_w_.clear(); // the timed servo's drift follows w (fix_rve_servo_timed.tpp)
-    drift_theta_pair_.clear();
-    drift_theta_corner_ = Rotation{};
-  }
+    servo_.zero_fluctuations();
   status_ = running;
   failure_reason_.clear();
   result_.F = F_;
@@ -81,11 +72,11 @@ void FixRveServo<dim>::schedule_frame_move(const Tensor& F_from)
   {
     const fe2dem::FrameParticle<dim>& p = frame_.particles[q];
     move_target_[q] = fe2dem::apply(F_, p.X);
-    rot_target_[q] = theta_F + theta_corner_;
+    rot_target_[q] = theta_F + servo_.theta_corner;
     if (p.pair >= 0)
     {
-      move_target_[q] = move_target_[q] + w_[p.pair];
-      rot_target_[q] = theta_F + theta_pair_[p.pair];
+      move_target_[q] = move_target_[q] + servo_.w[p.pair];
+      rot_target_[q] = theta_F + servo_.theta_pair[p.pair];
     }
     largest = std::max(largest, fe2dem::norm(move_target_[q] - move_start_[q]));
     largest = std::max(largest, fe2dem::spin_norm(rot_target_[q] - rot_start_[q]) * p.radius);
@@ -371,79 +362,25 @@ double FixRveServo<dim>::servo_residual() const
 // Step 4 of the servo: move each group along its net contact force (and
 // rotate along its net contact moment), i.e. against the residual a_+ + a_-
 // of (R4) (3D edge groups: the sum over four images). Moving along the net
-// contact force is the stable direction.
-//
-// The fixed gain g_a = gain_a dt^2/M overshoots for a pair held by many
-// stiff contacts (measured: a period-2 oscillation of a_+ + a_- at
-// constant amplitude). Each pair therefore scales its gain by a factor in
-// [1e-200, 1] that halves whenever its residual changes sign and recovers by
-// 20 % per iteration otherwise, per force component and for the moment.
+// contact force is the stable direction. The gains, their adaptation and
+// the integral action of timed solves are ServoController's.
 template <int dim>
 void FixRveServo<dim>::apply_servo_correction()
 {
-  const double dt2 = dtv_ * dtv_;
-  // The factor never drops below min_factor. Without a floor, a balanced
-  // component whose round-off changes sign halved it to 0.0 (about 1075 net
-  // halvings); 1.2 x 0 never recovers, so a group that later lost its
-  // balance stayed frozen (small_3d at 6 % axial strain: r_a stuck at 0.02
-  // for 1e6 steps). With gain dt^2/M ~ 1e-5 m/N, forces below 1 N and
-  // positions ~1e-2 m, a factor below about 1e-13 moves a group by less than
-  // the round-off of its position, so the floor changes no result that was
-  // not frozen, and 1.2^2525 brings it back to 1 within a solve.
-  static constexpr double min_factor = 1e-200;
-  auto adapt = [](double& factor, double now, double before) {
-    factor = now * before < 0.0 ? std::max(0.5 * factor, min_factor) : std::min(1.0, 1.2 * factor);
-  };
-  // timed solves with timed_servo integral: integral action (carry_drift, fix_rve_servo_timed.tpp)
+  // timed solves with timed_servo integral: integral action (fix_rve_servo_timed.tpp)
   const bool integral = timed_steps_ > 0 && timed_integral_;
-  if (integral)
-  {
-    drift_w_.resize(w_.size(), Vector{});
-    drift_theta_pair_.resize(theta_pair_.size(), Rotation{});
-  }
   for (std::size_t e = 0; e < frame_.groups.size(); ++e)
   {
     const auto& g = frame_.groups[e];
     const int i = local_index(frame_.particles[g[0]].tag);
-    const double M = atom->rmass[i], R = atom->radius[i];
-    const Vector da = group_sum(frame_force_, g);
-    const Rotation dm = group_sum(frame_moment_, g);
-    const Vector w_before = w_[e];
-    const Rotation theta_before = theta_pair_[e];
-    ServoMemory& mem = servo_memory_[e];
-    for (int k = 0; k < dim; ++k)
-    {
-      adapt(mem.force_factor[k], da[k], mem.last_da[k]);
-      w_[e][k] -= mem.force_factor[k] * gain_a_ * dt2 / M * da[k];
-    }
-    for (int c = 0; c < n_spin; ++c)
-    {
-      adapt(mem.moment_factor[c], dm[c], mem.last_dm[c]);
-      theta_pair_[e][c] -= mem.moment_factor[c] * gain_m_ * dt2 / (M * R * R) * dm[c];
-    }
-    if (integral)
-    {
-      carry_drift(w_[e], w_before, drift_w_[e]);
-      carry_drift(theta_pair_[e], theta_before, drift_theta_pair_[e]);
-    }
-    mem.last_da = da;
-    mem.last_dm = dm;
+    servo_.correct_group(e, group_sum(frame_force_, g), group_sum(frame_moment_, g), atom->rmass[i],
+                         atom->radius[i], dtv_, integral);
   }
   const int ic = local_index(frame_.particles[frame_.corners[0]].tag);
   Rotation dmc{};
   for (int k : frame_.corners)
     dmc = dmc + frame_moment_[k];
-  ServoMemory& mc = servo_memory_corner_;
-  const Rotation corner_before = theta_corner_;
-  for (int c = 0; c < n_spin; ++c)
-  {
-    adapt(mc.moment_factor[c], dmc[c], mc.last_dm[c]);
-    theta_corner_[c] -= mc.moment_factor[c] * gain_m_ * dt2 /
-                        (atom->rmass[ic] * std::pow(atom->radius[ic], 2)) * dmc[c];
-  }
-  if (integral)
-    carry_drift(theta_corner_, corner_before, drift_theta_corner_);
-  mc.last_dm = dmc;
+  servo_.correct_corner(dmc, atom->rmass[ic], atom->radius[ic], dtv_, integral);
   ++result_.servo_iterations;
   schedule_frame_move(F_);
 }

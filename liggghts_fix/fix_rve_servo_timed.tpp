@@ -13,7 +13,7 @@
 // steady loading the balanced fluctuations drift at a steady rate, and a
 // proportional servo follows a drift only with a steady imbalance, a frame
 // that lags behind its balanced place and a stress that grows with the
-// rate (carry_drift). Cundall
+// rate (ServoController::carry_drift, servo_controller.cpp). Cundall
 // damping acts on the fluctuation velocity v - L (x - origin), L the
 // velocity gradient of the mean motion (as YADE's NewtonIntegrator does in
 // periodic cells): damping the absolute velocity of particles that flow
@@ -73,26 +73,6 @@ void FixRveServo<dim>::timed_check(long step)
   result_.sigma = w * timed_sigma_sum_;
   result_.sigma_lw = w * timed_sigma_lw_sum_;
   status_ = converged;
-}
-
-// Integral action (timed_servo integral; called by apply_servo_correction
-// in timed solves): each correction also carries the running mean d of the
-// recent moves per check (of w, and of the pair and corner rotations),
-//   move = servo correction + d,   d <- m d + (1 - m) move,   m = 0.8,
-// so a steady drift is followed with no steady imbalance (the structure of
-// fe2dem-rve's rate control, dealii_app/rve_driver/rate_stress_control.h).
-// The servo's own gain adaptation (halving on sign changes) still damps it.
-// Measured on small_3d in triaxial compression at 0.25 and 0.125 /s
-// (benchmarks/rve_continuous/README.md).
-template <int dim>
-template <class T>
-void FixRveServo<dim>::carry_drift(T& value, const T& before, T& drift)
-{
-  constexpr double m = 0.8;
-  using fe2dem::operator+;
-  const T move = (value - before) + drift;
-  value = before + move;
-  drift = m * drift + (1.0 - m) * move;
 }
 
 // begin_solve() of a timed solve: the frame move lasts the whole solve.

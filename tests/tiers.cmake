@@ -20,7 +20,7 @@
 
 set(FE2DEM_UNIT_TESTS
   homogenisation_hand_computed rve_continuous_rate_control_model
-  frame_3d_face_triangulation frame_3d_corner_choice frame_membrane_push_and_balance
+  frame_3d_face_triangulation frame_3d_corner_choice frame_servo_controller frame_membrane_push_and_balance
   layers_solver_without_liggghts layers_common_without_liggghts layers_rve_driver_without_liggghts
   macro_one_point_element_modes macro_dynamic_relaxation_estimates
   macro_elastic_extension)

@@ -2,7 +2,7 @@
 """The layers' include rule, read from the compiler's own dependency files.
 
 Every object of a target (the *.o.d files CMake's Makefile generator keeps
-beside the objects) lists each header its source reached. Fails if any of
+beside the objects, in folders as the sources) lists each header its source reached. Fails if any of
 them lies under a forbidden directory, naming the source, the header and
 the chain's start; fails too if there are no dependency files to read.
 Usage: check_layer_includes.py OBJECT_DIR FORBIDDEN_DIR...
@@ -14,7 +14,7 @@ import sys
 
 def main(object_dir, forbidden):
     forbidden = [os.path.realpath(d).rstrip("/") + "/" for d in forbidden]
-    depfiles = sorted(glob.glob(os.path.join(object_dir, "*.o.d")))
+    depfiles = sorted(glob.glob(os.path.join(object_dir, "**", "*.o.d"), recursive=True))
     if not depfiles:
         print(f"FAIL no dependency files (*.o.d) in {object_dir}: build the target first")
         return 1

@@ -10,7 +10,7 @@
 //    secant estimate over-damps the chain's lowest mode).
 // Usage: test_dynamic_relaxation
 #include "check.h"
-#include "dynamic_relaxation.h"
+#include "analyses/dynamic_relaxation.h"
 
 #include <cmath>
 

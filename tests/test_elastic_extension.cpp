@@ -10,7 +10,7 @@
 //  - an unchanged boundary: no motion and no CG iteration.
 // Usage: test_elastic_extension
 #include "check.h"
-#include "elastic_extension.h"
+#include "analyses/elastic_extension.h"
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>

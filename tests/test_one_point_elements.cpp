@@ -12,7 +12,7 @@
 //  - the viscous form dissipates: v . f_hourglass >= 0.
 // Usage: test_one_point_elements
 #include "check.h"
-#include "one_point_elements.h"
+#include "elements/one_point_elements.h"
 
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>

@@ -1,10 +1,10 @@
 #include "explicit_solver.h"
 #include "memory_estimate.h"
 
-#include "checkpoint_file.h"
-#include "corotational_material.h"
-#include "neo_hookean.h"
-#include "rve_material.h"
+#include "output/checkpoint_file.h"
+#include "materials/corotational_material.h"
+#include "materials/neo_hookean.h"
+#include "materials/rve_material.h"
 #include "prepared_rve.h"
 #include "servo_rve_factory.h"
 

@@ -18,14 +18,14 @@
  */
 #pragma once
 
-#include "analysis.h"
-#include "energy_balance.h"
-#include "history_writer.h"
-#include "ip_state.h"
-#include "load_case.h"
-#include "macro_parameters.h"
-#include "material.h"
-#include "one_point_elements.h"
+#include "analyses/analysis.h"
+#include "analyses/energy_balance.h"
+#include "output/history_writer.h"
+#include "materials/ip_state.h"
+#include "loading/load_case.h"
+#include "parameters/macro_parameters.h"
+#include "materials/material.h"
+#include "elements/one_point_elements.h"
 #include "output_lock.h"
 
 #include <deal.II/base/conditional_ostream.h>

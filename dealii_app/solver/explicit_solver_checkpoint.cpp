@@ -1,7 +1,7 @@
 // Checkpoints of a run (checkpoint_file.h) and what stops it cleanly:
 // SIGTERM / SIGUSR1 and RVE faults write a checkpoint of the last converged
 // load step; --resume continues from the newest one, on any number of ranks.
-#include "checkpoint_file.h"
+#include "output/checkpoint_file.h"
 #include "explicit_solver.h"
 #include "stop_request.h"
 

@@ -1,7 +1,7 @@
 // The loading of fe2dem: the run over load stages and steps, sub-steps and
 // retries after RVE faults, and the boundary conditions of each step.
 #include "explicit_solver.h"
-#include "central_difference_analysis.h" // slow_loading_step_time
+#include "analyses/central_difference_analysis.h" // slow_loading_step_time
 #include "rve_pool.h" // CouplerError
 
 #include <deal.II/base/mpi.h>

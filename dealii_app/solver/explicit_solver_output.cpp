@@ -1,7 +1,7 @@
 // Output of a converged load step: summary.csv, history.h5, VTU and
 // particle dumps (architecture.md contracts).
 #include "explicit_solver.h"
-#include "ip_points_writer.h"
+#include "output/ip_points_writer.h"
 
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/numerics/data_out.h>

@@ -1,7 +1,7 @@
 // fe2dem FILE.prm: the macro problem of a parameter file.
 #include "explicit_solver.h"
 #include "fe2dem_version.h"
-#include "macro_parameters.h"
+#include "parameters/macro_parameters.h"
 #include "rve_pool.h" // CouplerError
 
 #include <deal.II/base/exceptions.h>

@@ -1,0 +1,168 @@
+/**
+ * @file load_case.h
+ * What the boundary of the macro specimen does in each load step: the
+ * prescribed displacements, the external forces and the measures reported
+ * per step. Load cases act on boundary ids, which fe2dem sets from the
+ * faces of the mesh's bounding box (0 left, 1 right, 2 bottom, 3 top, in 3D
+ * 4 back and 5 front, as GridGenerator::subdivided_hyper_rectangle with
+ * colorize numbers them; 2 dim for any other boundary face). y is the
+ * vertical axis in both dimensions.
+ *
+ * A run has two stages: stage 1 (e.g. isotropic compression; 0 steps if
+ * the case has none) and stage 2; each load step ends at a load fraction
+ * of its stage (dyadic, so sub-steps sum exactly).
+ */
+#pragma once
+
+#include "parameters/macro_parameters.h"
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/vector.h>
+
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace fe2dem::macro
+{
+/// Boundary ids of the bounding-box faces (x-, x+, y-, y+, z-, z+).
+enum BoxFace : unsigned int
+{
+  left = 0,
+  right = 1,
+  bottom = 2,
+  top = 3,
+  back = 4,
+  front = 5
+};
+
+/// Boundary id of boundary faces that lie on no face of the bounding box.
+constexpr unsigned int other_boundary_id(int dim) { return 2 * dim; }
+
+/**
+ * Adds to @p f the nodal forces of a follower pressure @p p (> 0 pushes in)
+ * on a boundary @p face in its current position (reference + @p u):
+ * -p n da. 2D: a straight edge, half to each node (exact). 3D: a bilinear
+ * face, -p int N_a (x_xi x x_eta) dxi deta by 2x2 Gauss points (exact: the
+ * integrand is at most quadratic in each of xi, eta). n is taken on the side
+ * of @p outward (any vector pointing out of the body).
+ */
+template <int dim>
+void add_follower_pressure(const typename dealii::DoFHandler<dim>::face_iterator& face,
+                           const dealii::Tensor<1, dim>& outward, double p, const dealii::Vector<double>& u,
+                           dealii::Vector<double>& f);
+
+/// Every dof's node and where it lies, fixed for a run.
+template <int dim>
+struct DofMap
+{
+  std::vector<dealii::Point<dim>> position; ///< reference position of the dof's node
+  std::vector<unsigned int> component;      ///< displacement component
+  std::vector<unsigned int> faces;          ///< bit b set: on a boundary face with id b
+  bool on(dealii::types::global_dof_index i, BoxFace b) const { return faces[i] >> b & 1u; }
+  /// Builds it from @p dofs; boundary faces must carry BoxFace ids.
+  void reinit(const dealii::DoFHandler<dim>& dofs);
+};
+
+template <int dim>
+class LoadCase
+{
+public:
+  using Constraints = std::map<dealii::types::global_dof_index, double>;
+  /// @param h0 reference height of the specimen (the axial strain is measured on it).
+  LoadCase(const DofMap<dim>& dofs, double h0) : dofs_(dofs), h0_(h0), h_ic_(h0) {}
+  virtual ~LoadCase() = default;
+
+  virtual unsigned int steps_in_stage(unsigned int stage) const = 0;
+  /// Prescribed displacement of every constrained dof at @p fraction of @p stage.
+  virtual Constraints constraints(unsigned int stage, double fraction) const = 0;
+  /// External nodal forces at @p fraction of @p stage for displacement @p u (into @p f, zeroed first).
+  virtual void external_force(unsigned int stage, double fraction, const dealii::DoFHandler<dim>& dofs,
+                              const dealii::Vector<double>& u, dealii::Vector<double>& f) const = 0;
+  /// Largest deviation of @p u from the case's affine field over the largest affine displacement (0: none).
+  virtual double affine_deviation(double /*fraction*/, const dealii::Vector<double>& /*u*/) const { return 0.0; }
+
+  /// End of stage 1: the top displacement and height that stage 2 is measured from.
+  void finish_stage_1(const dealii::Vector<double>& u);
+  /// Compressive axial strain of the top edge in stage 2 (0 in stage 1).
+  double axial_strain(unsigned int stage, const dealii::Vector<double>& u) const;
+  /// Vertical internal force summed over the top edge.
+  double top_reaction(const dealii::Vector<double>& f_int) const;
+  /**
+   * The nominal strain of the fastest load step of stage 2: the largest
+   * change of a prescribed displacement over one step, over the specimen's
+   * extent along its component (the pace of 'Quasi-static scheme' = slow
+   * loading). 0 if stage 2 prescribes no motion (e.g. loads by pressure only).
+   */
+  double largest_step_strain() const;
+
+  /// What a checkpoint keeps: top displacement and height after stage 1.
+  struct Reference
+  {
+    double u_top_ic = 0.0, h_ic = 0.0;
+  };
+  Reference reference() const { return {u_top_ic_, h_ic_}; }
+  void set_reference(const Reference& r) { u_top_ic_ = r.u_top_ic, h_ic_ = r.h_ic; }
+
+protected:
+  /// Mean vertical displacement of the top edge's nodes.
+  double mean_top_displacement(const dealii::Vector<double>& u) const;
+  const DofMap<dim>& dofs_;
+  double h0_;
+  double u_top_ic_ = 0.0, h_ic_ = 0.0;
+};
+
+/**
+ * The compression test: biaxial in 2D ([LBS] §3.1), triaxial in 3D.
+ * The bottom face is fixed vertically; rigid motions are removed by the
+ * bottom-left node in x (2D), or by the bottom corner at the lowest x and z
+ * in x and z and the bottom corner at the highest x and lowest z in z (3D:
+ * both lie on the plane z = z_min, so a homogeneous deformation with
+ * diagonal F satisfies them). Stage 1 ramps a follower pressure on the
+ * sides (x faces, and z faces in 3D) and the top; stage 2 keeps it on the
+ * sides and moves the top down to the axial strain of the height after
+ * stage 1.
+ */
+template <int dim>
+class CompressionLoadCase : public LoadCase<dim>
+{
+public:
+  /// @throws std::runtime_error if a face of the bounding box has too few nodes.
+  CompressionLoadCase(const DofMap<dim>& dofs, double h0, const Loading& loading, const std::string& mesh_file);
+  unsigned int steps_in_stage(unsigned int stage) const override;
+  typename LoadCase<dim>::Constraints constraints(unsigned int stage, double fraction) const override;
+  void external_force(unsigned int stage, double fraction, const dealii::DoFHandler<dim>& dofs,
+                      const dealii::Vector<double>& u, dealii::Vector<double>& f) const override;
+
+private:
+  const Loading& loading_;
+};
+
+/// Patch test: every node of the bounding box's edges at (F - I) X, F ramped from I.
+template <int dim>
+class AffineLoadCase : public LoadCase<dim>
+{
+public:
+  AffineLoadCase(const DofMap<dim>& dofs, double h0, const Loading& loading);
+  unsigned int steps_in_stage(unsigned int stage) const override { return stage == 1 ? 0 : steps_; }
+  typename LoadCase<dim>::Constraints constraints(unsigned int stage, double fraction) const override;
+  void external_force(unsigned int, double, const dealii::DoFHandler<dim>&, const dealii::Vector<double>&,
+                      dealii::Vector<double>& f) const override
+  {
+    f = 0.0;
+  }
+  double affine_deviation(double fraction, const dealii::Vector<double>& u) const override;
+
+private:
+  /// F at @p fraction of the ramp.
+  dealii::Tensor<2, dim> F_at(double fraction) const;
+  dealii::Tensor<2, dim> F_;
+  unsigned int steps_;
+};
+
+/// The load case of subsection Loading.
+template <int dim>
+std::unique_ptr<LoadCase<dim>> make_load_case(const DofMap<dim>& dofs, double h0, const Parameters& prm);
+} // namespace fe2dem::macro

@@ -17,7 +17,7 @@
  *     inertia disc|sphere      moment of inertia 0.5 or 0.4 m r^2, default disc (2D);
  *                              3D: sphere only
  *     gains ga gm              dimensionless servo gains g_a M/dt^2, g_m M R^2/dt^2,
- *                              default 5 10 (see README: the paper's 100 200
+ *                              default 5 10 (docs/choices.md: the paper's 100 200
  *                              diverge with our reading of the units)
  *     relax ekin_epot|unbalanced TOL   criterion (R12) or (R13), default ekin_epot 1e-3
  *     servo_tol EPS            r_a of (R14) at convergence, default 1e-4
@@ -48,7 +48,7 @@
  *                              triangles of each face's frame particles, acting once
  *                              a centre crosses a triangle's plane
  *                              (membrane_3d.h). Needs kn or Debian's
- *                              hertz model. Default yes (see README)
+ *                              hertz model. Default yes (docs/choices.md)
  *     timed_servo integral|proportional  the frame servo of timed solves: with integral
  *                              action (each correction also carries the running mean of
  *                              the recent ones, so a steady drift of the balanced
@@ -132,7 +132,7 @@ public:
   };
 
   /**
-   * The global vector f_ID[k + 1] = compute_vector(k), by name (README table).
+   * The global vector f_ID[k + 1] = compute_vector(k), by name (table in docs/fix-rve-servo.md).
    * Tensors take dim^2 consecutive entries, row-major (2D: 4, 3D: 9).
    */
   enum Output : int

@@ -16,7 +16,7 @@
  * face of a random 3D frame is not a closed layer of touching spheres, and
  * inner spheres sit in its gaps with their centres closer than their radius
  * to a triangle's plane (10 of the 1000 spheres of lsyf_1000 as built, none
- * beyond it: README). With the centre criterion the membrane never acts on
+ * beyond it: docs/fix-rve-servo.md). With the centre criterion the membrane never acts on
  * a packing as built, so results are bitwise those without it until an
  * inner particle starts to pass through the frame.
  */

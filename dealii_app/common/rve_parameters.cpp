@@ -223,7 +223,7 @@ void RveParameters::declare_parameters(dealii::ParameterHandler& prm)
                     "timed solves of 'Solve interval' DEM steps with the servo acting at every "
                     "check, then held there until relaxed (Relaxation tolerance) and balanced "
                     "(Servo tolerance): the continuous path, as a periodic cell is loaded and "
-                    "held (issue 35: the iterations' frame jumps lose stress; README, 'Solve "
+                    "held (issue 35: the iterations' frame jumps lose stress; docs/user-guide.md, 'Solve "
                     "drive').");
   prm.declare_entry("Solve strain rate", "0.25", Double(0.0),
                     "Solve drive = continuous: the largest |dF_ij/dt| [1/s] while F approaches "

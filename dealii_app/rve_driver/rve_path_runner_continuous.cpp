@@ -2,7 +2,7 @@
 // strain rate in physical time. What DEM users call the quasi-static
 // response of a granular sample is the limit of loading at a constant rate
 // as the inertial number falls; the stepped drive lies below that limit (its
-// servo-iteration solves lose stress, README "Solve drive").
+// servo-iteration solves lose stress, docs/user-guide.md, "Solve drive").
 // Here the RVE runs timed solves (fix rve/servo `timed_steps`: exactly
 // 'Control interval' DEM steps each, the frame moving at constant velocity
 // and its servo acting at every check, no relaxation stop), the driven

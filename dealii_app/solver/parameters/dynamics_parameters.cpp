@@ -19,14 +19,14 @@ void Dynamics::declare_parameters(dealii::ParameterHandler& prm)
                     "to 'End time'; 'Load steps' is then the number of output intervals. With RVEs each "
                     "RVE advances every macro step's physical time (timed solves of fix "
                     "rve/servo, stresses averaged over the step); the macro step is then a "
-                    "multiple of the RVE 'Check interval' x 'Time step' (README, 'Explicit "
+                    "multiple of the RVE 'Check interval' x 'Time step' (docs/user-guide.md, 'Explicit "
                     "dynamics with RVEs').");
   prm.declare_entry("Quasi-static scheme", "auto", Selection("auto|slow loading|relaxed steps"),
                     "quasi-static: slow loading: explicit dynamics at the nominal 'Strain rate' with "
                     "a numerical mass (the smallest that lets a macro step span one RVE 'Check "
                     "interval') and 'Local damping'; RVEs advance in time as in dynamics, so the "
                     "result is the limit of loading at a constant rate, as DEM defines the "
-                    "quasi-static response (README, 'One quasi-static answer'); it converges as the "
+                    "quasi-static response (docs/user-guide.md, 'One quasi-static answer'); it converges as the "
                     "rate falls. relaxed steps: every load step relaxed to rest by dynamic "
                     "relaxation (subsection Dynamic relaxation), the scheme of [LBS] and [LSYF]; "
                     "exact for path-independent materials, measured 2-8 % below the slow-loading "
@@ -38,7 +38,7 @@ void Dynamics::declare_parameters(dealii::ParameterHandler& prm)
                     "every load step lasts the same time, the largest change of a prescribed "
                     "displacement in one step divided by the specimen's extent along it and by "
                     "this rate. 0.25 /s: within 1 % of the rate limit on the shipped 3D packings "
-                    "at 100 kPa (README, 'One quasi-static answer'); halve it to check.");
+                    "at 100 kPa (docs/user-guide.md, 'One quasi-static answer'); halve it to check.");
   prm.declare_entry("Local damping", "0.7", Double(0.0, 1.0),
                     "slow loading: Cundall's local damping of the nodal forces, in [0, 1): the "
                     "unbalanced force f of a dof is reduced by this fraction of |f| against its "

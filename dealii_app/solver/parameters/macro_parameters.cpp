@@ -655,7 +655,7 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
       "8-22 % below the continuous limit on the one-element triaxial test, "
       "benchmarks/rve_continuous/README.md), and slow loading and explicit dynamics use timed "
       "solves. Use 'Solve drive' = servo iterations; the quasi-static response at a constant rate "
-      "is 'Quasi-static scheme' = slow loading (README, 'One quasi-static answer')");
+      "is 'Quasi-static scheme' = slow loading (docs/user-guide.md, 'One quasi-static answer')");
   if (material.type == MaterialParameters::Type::rve)
   {
     rve.check_files(file);

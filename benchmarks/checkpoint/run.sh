@@ -11,7 +11,7 @@ build="$(realpath -m "${1:-$root/build}")"
 source "$root/benchmarks/common.sh"
 work="$(mktemp -d)"
 { sed "s#^set Output directory.*#set Output directory = $work/out#; s#\.\./\.\./rve_templates#$root/rve_templates#" \
-    "$root/dealii_app/examples/biaxial_2x4.prm"
+    "$root/benchmarks/perf/biaxial_2x4_strict.prm"
   printf 'subsection Loading\n  set Isotropic steps = 2\n  set Load steps = 20\nend\n'
   printf 'subsection Checkpoint\n  set Every = 1\n  set Keep = 5\nend\n'; } > "$work/case.prm"
 # Three load steps, then SIGTERM (a fourth checkpoint, of step 3).

@@ -23,7 +23,7 @@ row() { # series ips particles wall summary
 }
 for m in "1 1" "1 2" "2 4" "4 8"; do
   set -- $m
-  w=$("$here/run_case.sh" "$build" "$root/dealii_app/examples/biaxial_2x4.prm" "$work/m" 2 \
+  w=$("$here/run_case.sh" "$build" "$root/benchmarks/perf/biaxial_2x4_strict.prm" "$work/m" 2 \
         "subsection Geometry\n  set Cells x = $1\n  set Cells y = $2\nend\n$short")
   row ips $((4 * $1 * $2)) 228 "$w" "$work/m/summary.csv"
 done

@@ -17,8 +17,8 @@ extra='subsection Loading\n  set Load steps = 4\n  set Axial strain = 0.02\nend\
 work="$(mktemp -d)"; trap 'rm -rf "$work"' EXIT
 t1=(); t2=(); imb=()
 for ((k = 0; k < repeats; ++k)); do
-  t1+=("$("$here/run_case.sh" "$build" "$root/dealii_app/examples/biaxial_2x4.prm" "$work/np1" 1 "$extra")")
-  t2+=("$("$here/run_case.sh" "$build" "$root/dealii_app/examples/biaxial_2x4.prm" "$work/np2" 2 "$extra")")
+  t1+=("$("$here/run_case.sh" "$build" "$root/benchmarks/perf/biaxial_2x4_strict.prm" "$work/np1" 1 "$extra")")
+  t2+=("$("$here/run_case.sh" "$build" "$root/benchmarks/perf/biaxial_2x4_strict.prm" "$work/np2" 2 "$extra")")
   imb+=("$(awk -F, 'NR == 1 {for (i = 1; i <= NF; ++i) c[$i] = i} NR > 1 {m += $c["rve_rank_max_s"]; a += $c["rve_rank_mean_s"]} END {printf "%.4f", m / a}' "$work/np2/summary.csv")")
   python3 "$root/tests/compare_summaries.py" "$work/np1/summary.csv" "$work/np2/summary.csv" > /dev/null ||
     { echo "FAIL: 1 and 2 ranks differ"; exit 1; }

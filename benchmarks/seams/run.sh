@@ -4,7 +4,7 @@
 #   one_element   tests/one_element/macro.prm, 1 rank, particle dumps, checkpoints
 #   one_element_rve  tests/one_element/rve.prm through fe2dem-rve
 #   demo_1x1      dealii_app/examples/biaxial_1x1.prm, 2 ranks (scripts/run-demo.sh)
-#   mts20_2x4     dealii_app/examples/biaxial_2x4.prm, 2 ranks, check10 + mts20
+#   mts20_2x4     benchmarks/perf/biaxial_2x4_strict.prm, 2 ranks, check10 + mts20
 #   elastic_block dealii_app/examples/elastic_block.prm (neo-Hookean)
 #   recommended_2x4  benchmarks/lbs2018/lbs2018.prm: 2x4, the recommended accelerations, 2 ranks
 #   one_element_3d   tests/one_element_3d/shear_macro.prm, 3D with RVEs (dynamic relaxation)
@@ -39,7 +39,7 @@ for c in "${cases[@]}"; do
       prm_of "$root/dealii_app/examples/biaxial_1x1.prm" "$d" > "$d/case.prm"
       "${mpirun[@]}" -np 2 "$fe2dem" "$d/case.prm" > "$d/log" 2>&1 ;;
     mts20_2x4)
-      { prm_of "$root/dealii_app/examples/biaxial_2x4.prm" "$d"
+      { prm_of "$root/benchmarks/perf/biaxial_2x4_strict.prm" "$d"
         printf 'subsection Material\n  set History = continuous\n  set DEM steps per iteration = 20\nend\n'
         printf 'subsection RVE\n  set Check interval = 10\nend\n'; } > "$d/case.prm"
       "${mpirun[@]}" -np 2 "$fe2dem" "$d/case.prm" > "$d/log" 2>&1 ;;

@@ -99,6 +99,15 @@ public:
   }
   std::unique_ptr<Rve<dim>> restore(const std::vector<char>& state) const override
   {
+    auto [F0, inner] = split(state);
+    return std::make_unique<PreparedRve<dim>>(inner_->restore(inner), F0);
+  }
+  void check_state(const std::vector<char>& state) const override { inner_->check_state(split(state).second); }
+
+private:
+  /// F0 and the inner RVE's bytes of a prepared state; a state without the tag is refused.
+  std::pair<Tensor, std::vector<char>> split(const std::vector<char>& state) const
+  {
     constexpr std::size_t header = sizeof state_tag + sizeof(double) * dim * dim;
     if (state.size() < header || std::memcmp(state.data(), state_tag, sizeof state_tag) != 0)
       throw std::runtime_error(preparation_.source + ": the saved RVE state was not prepared (it was "
@@ -106,11 +115,8 @@ public:
                                "written with");
     Tensor F0;
     std::memcpy(F0.data(), state.data() + sizeof state_tag, sizeof(double) * dim * dim);
-    return std::make_unique<PreparedRve<dim>>(
-      inner_->restore(std::vector<char>(state.begin() + header, state.end())), F0);
+    return {F0, std::vector<char>(state.begin() + header, state.end())};
   }
-
-private:
   std::vector<char> prepare() const;
   std::shared_ptr<const RveFactory<dim>> inner_;
   RvePreparation preparation_;

@@ -89,5 +89,12 @@ public:
   virtual std::unique_ptr<Rve<dim>> create() const = 0;
   /// An RVE from serialise() / committed_state() bytes, committed there.
   virtual std::unique_ptr<Rve<dim>> restore(const std::vector<char>& state) const = 0;
+  /**
+   * Checks, before restore(), that saved bytes restore (e.g. in a child
+   * process): a resumed run's states were written by an earlier run and may
+   * be damaged in ways their fingerprint does not see. Nothing by default.
+   * @throws std::runtime_error with a message for the user.
+   */
+  virtual void check_state(const std::vector<char>& /*state*/) const {}
 };
 } // namespace fe2dem

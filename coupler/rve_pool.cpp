@@ -33,18 +33,28 @@ RvePool<dim>::RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> fact
 {
 }
 
+// The saved states are checked, all of them and collectively, before any is
+// restored: a state that crashes LIGGGHTS in this process would end the
+// whole job without a word (a damage written before the fingerprint).
 template <int dim>
 RvePool<dim>::RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
                       const std::vector<QuadraturePoint>& points, const StateSource& state_of,
                       int load_step)
-  : RvePool(comm, factory, points, load_step,
-            [&](std::size_t k) { return factory_->restore(state_of(k)); })
+  : RvePool(
+      comm, factory, points, load_step,
+      [this](std::size_t k) {
+        const std::vector<char> state = std::move(saved_states_.at(k));
+        saved_states_.erase(k);
+        return factory_->restore(state);
+      },
+      [this, &state_of] { check_saved_states(state_of); })
 {
 }
 
 template <int dim>
 RvePool<dim>::RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
-                      const std::vector<QuadraturePoint>& points, int load_step, const Make& make)
+                      const std::vector<QuadraturePoint>& points, int load_step, const Make& make,
+                      const std::function<void()>& before_make)
   : comm_(comm), factory_(std::move(factory)), points_(points), owner_(points.size()),
     cost_(points.size(), 0.0), load_step_(load_step)
 {
@@ -52,9 +62,56 @@ RvePool<dim>::RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> fact
   MPI_Comm_size(comm_, &n_ranks_);
   check_factory(); // before any instance exists
   place_in_blocks();
+  if (before_make)
+    before_make();
   for (std::size_t k = 0; k < points_.size(); ++k)
     if (owner_[k] == rank_)
       local_[k] = make(k);
+}
+
+template <int dim>
+void RvePool<dim>::check_saved_states(const StateSource& state_of)
+{
+  int failed = INT_MAX;
+  std::string reason;
+  for (std::size_t k = 0; k < points_.size(); ++k)
+    if (owner_[k] == rank_)
+    {
+      saved_states_[k] = state_of(k);
+      if (failed == INT_MAX)
+        try
+        {
+          factory_->check_state(saved_states_[k]);
+        }
+        catch (const std::runtime_error& e)
+        {
+          failed = static_cast<int>(k);
+          reason = e.what();
+        }
+    }
+  int first_failed = INT_MAX;
+  MPI_Allreduce(&failed, &first_failed, 1, MPI_INT, MPI_MIN, comm_);
+  if (first_failed == INT_MAX)
+    return;
+  int length = static_cast<int>(reason.size());
+  MPI_Bcast(&length, 1, MPI_INT, owner_[first_failed], comm_);
+  reason.resize(length);
+  MPI_Bcast(&reason[0], length, MPI_CHAR, owner_[first_failed], comm_);
+  saved_states_.clear();
+  throw CouplerError(points_[first_failed].id,
+                     describe(first_failed) + ", saved at load step " + std::to_string(load_step_) + ": " + reason);
+}
+
+template <int dim>
+std::string RvePool<dim>::describe(std::size_t k) const
+{
+  const QuadraturePoint& p = points_[k];
+  std::ostringstream msg;
+  msg << "RVE of IP " << p.id << " at (" << p.position[0];
+  for (int d = 1; d < dim; ++d)
+    msg << ", " << p.position[d];
+  msg << ")";
+  return msg.str();
 }
 
 // The factory's input (e.g. the LIGGGHTS template) is checked once, in a
@@ -190,13 +247,8 @@ std::vector<RveResponse<dim>> RvePool<dim>::solve(const std::vector<Tensor>& F)
     MPI_Bcast(&length, 1, MPI_INT, owner_[first_failed], comm_);
     reason.resize(length);
     MPI_Bcast(&reason[0], length, MPI_CHAR, owner_[first_failed], comm_);
-    const QuadraturePoint& p = points_[first_failed];
-    std::ostringstream msg;
-    msg << "RVE of IP " << p.id << " at (" << p.position[0];
-    for (int d = 1; d < dim; ++d)
-      msg << ", " << p.position[d];
-    msg << "), load step " << load_step_ + 1 << ": " << reason;
-    throw CouplerError(p.id, msg.str());
+    throw CouplerError(points_[first_failed].id,
+                       describe(first_failed) + ", load step " + std::to_string(load_step_ + 1) + ": " + reason);
   }
 
   // rve_to_macro: every rank gets every IP's result.

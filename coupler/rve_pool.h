@@ -131,7 +131,16 @@ private:
   using Make = std::function<std::unique_ptr<Rve<dim>>(std::size_t k)>;
   /// Shared by the public constructors: @p make builds this rank's RVE k.
   RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
-          const std::vector<QuadraturePoint>& points, int load_step, const Make& make);
+          const std::vector<QuadraturePoint>& points, int load_step, const Make& make,
+          const std::function<void()>& before_make = {});
+  /**
+   * Reads this rank's saved states into saved_states_ and has the factory
+   * check each (RveFactory::check_state) before any is restored; the first
+   * failure in IP order is raised on every rank as a CouplerError.
+   */
+  void check_saved_states(const StateSource& state_of);
+  /// "RVE of IP <id> at (x, y[, z])" for messages.
+  std::string describe(std::size_t k) const;
   void require_committed(const char* what) const;
   /// factory_->check() on rank 0; its message raised on every rank.
   void check_factory() const;
@@ -144,6 +153,8 @@ private:
   std::vector<QuadraturePoint> points_;
   std::vector<int> owner_;
   std::map<std::size_t, std::unique_ptr<Rve<dim>>> local_;
+  /// A resumed pool's saved states of this rank while it is built (empty after).
+  std::map<std::size_t, std::vector<char>> saved_states_;
   std::vector<double> cost_;
   int load_step_ = 0;
   bool committed_ = true;

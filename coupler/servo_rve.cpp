@@ -454,6 +454,26 @@ public:
   {
     return ServoRve<dim>::restore(setup_, state, mode_);
   }
+  // The template restores the bytes in a child fe2dem-liggghts: a damaged
+  // image can crash LIGGGHTS (SIGSEGV) or stop it in read_restart, which in
+  // this process would end the MPI job without a word.
+  void check_state(const std::vector<char>& state) const override
+  {
+    const std::string file = state_file("check");
+    write_bytes(file, state);
+    try
+    {
+      check_rve_state_file(setup_, file, 120);
+    }
+    catch (...)
+    {
+      std::error_code ec;
+      std::filesystem::remove(file, ec);
+      throw;
+    }
+    std::error_code ec;
+    std::filesystem::remove(file, ec);
+  }
 
 private:
   RveSetup setup_;

@@ -6,11 +6,16 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <csignal>
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
+#include <thread>
+#include <utility>
 #include <vector>
 
 extern char** environ;
@@ -56,22 +61,37 @@ std::string executable()
     return FE2DEM_LIGGGHTS_EXE;
   return FE2DEM_INSTALLED_LIGGGHTS_EXE;
 }
-} // namespace
 
-void check_rve_template(const RveSetup& setup, const int dim)
+/// What a child run of the template gave: its exit status and its screen output.
+struct ChildRun
+{
+  int status = 0;          ///< waitpid's status
+  bool timed_out = false;  ///< killed after the time limit
+  std::vector<std::string> lines;
+  /// The first line starting with ERROR and the template command echoed before it.
+  std::pair<std::string, std::string> error() const
+  {
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      if (lines[i].rfind("ERROR", 0) == 0)
+      {
+        for (std::size_t j = i; j-- > 0;)
+          if (!lines[j].empty() && lines[j][0] != ' ' && lines[j].rfind("WARNING", 0) != 0)
+            return {lines[i], lines[j]};
+        return {lines[i], ""};
+      }
+    return {"", ""};
+  }
+};
+
+/**
+ * Runs @p setup's template with its variables and @p extra ones, then `run
+ * 0 post no`, in a child fe2dem-liggghts; kills it after @p seconds.
+ * @throws TemplateError if the child cannot be started.
+ */
+ChildRun run_template_in_child(const RveSetup& setup, const std::map<std::string, std::string>& extra,
+                               int seconds)
 {
   namespace fs = std::filesystem;
-  if (!fs::is_regular_file(setup.template_file))
-    throw TemplateError("RVE template '" + setup.template_file + "' does not exist or is not a file");
-  if (const auto data = setup.variables.find("rve_data"); data != setup.variables.end())
-    try
-    {
-      check_packing_data(data->second, dim);
-    }
-    catch (const std::runtime_error& e)
-    {
-      throw TemplateError(std::string("the RVE packing: ") + e.what());
-    }
   const std::string base = (fs::temp_directory_path() / ("fe2dem-check-" + std::to_string(getpid()))).string();
   const std::string wrapper = base + ".in", output = base + ".out";
   {
@@ -79,8 +99,9 @@ void check_rve_template(const RveSetup& setup, const int dim)
     w << "include " << setup.template_file << "\nrun 0 post no\n";
   }
   std::vector<std::string> args = {executable(), "-echo", "screen", "-log", "none"};
-  for (const auto& [name, value] : setup.variables)
-    args.insert(args.end(), {"-var", name, value});
+  for (const auto* vars : {&setup.variables, &extra})
+    for (const auto& [name, value] : *vars)
+      args.insert(args.end(), {"-var", name, value});
   args.insert(args.end(), {"-in", wrapper});
   std::vector<char*> argv;
   for (auto& a : args)
@@ -105,38 +126,74 @@ void check_rve_template(const RveSetup& setup, const int dim)
   pid_t pid = 0;
   const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&actions);
-  int status = 0;
+  ChildRun run;
   if (spawned == 0)
-    waitpid(pid, &status, 0);
+  {
+    // A damaged state can make LIGGGHTS loop: poll, and kill it at the limit.
+    const auto limit = std::chrono::steady_clock::now() + std::chrono::seconds(seconds);
+    while (waitpid(pid, &run.status, WNOHANG) == 0)
+    {
+      if (std::chrono::steady_clock::now() > limit)
+      {
+        kill(pid, SIGKILL);
+        waitpid(pid, &run.status, 0);
+        run.timed_out = true;
+        break;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+  }
   std::ifstream in(output);
-  std::vector<std::string> lines;
   for (std::string l; std::getline(in, l);)
-    lines.push_back(l);
+    run.lines.push_back(l);
   std::error_code ec;
   fs::remove(wrapper, ec);
   fs::remove(output, ec);
   if (spawned != 0)
     throw TemplateError("cannot start '" + args[0] + "' to check the RVE template: " +
                         std::strerror(spawned) + " (set FE2DEM_LIGGGHTS to its path)");
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0)
-    return;
+  return run;
+}
 
-  // The echo shows each command before it runs: the one before ERROR failed.
-  std::string message = "LIGGGHTS stopped without a message (exit status " +
-                        std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")";
-  std::string command;
-  for (std::size_t i = 0; i < lines.size(); ++i)
-    if (lines[i].rfind("ERROR", 0) == 0)
+/// How a child that did not end with status 0 ended, in words.
+std::string ending(const ChildRun& run)
+{
+  if (run.timed_out)
+    return "LIGGGHTS did not finish within the time limit (killed)";
+  if (WIFSIGNALED(run.status))
+    return std::string("LIGGGHTS crashed (signal ") + std::to_string(WTERMSIG(run.status)) + ", " +
+           strsignal(WTERMSIG(run.status)) + ")";
+  return "LIGGGHTS stopped without a message (exit status " +
+         std::to_string(WIFEXITED(run.status) ? WEXITSTATUS(run.status) : -1) + ")";
+}
+
+bool succeeded(const ChildRun& run)
+{
+  return !run.timed_out && WIFEXITED(run.status) && WEXITSTATUS(run.status) == 0;
+}
+} // namespace
+
+void check_rve_template(const RveSetup& setup, const int dim)
+{
+  namespace fs = std::filesystem;
+  if (!fs::is_regular_file(setup.template_file))
+    throw TemplateError("RVE template '" + setup.template_file + "' does not exist or is not a file");
+  if (const auto data = setup.variables.find("rve_data"); data != setup.variables.end())
+    try
     {
-      message = lines[i];
-      for (std::size_t j = i; j-- > 0;)
-        if (!lines[j].empty() && lines[j][0] != ' ' && lines[j].rfind("WARNING", 0) != 0)
-        {
-          command = lines[j];
-          break;
-        }
-      break;
+      check_packing_data(data->second, dim);
     }
+    catch (const std::runtime_error& e)
+    {
+      throw TemplateError(std::string("the RVE packing: ") + e.what());
+    }
+  // A template set-up takes seconds; the limit only keeps a broken one from hanging the job.
+  const ChildRun run = run_template_in_child(setup, {}, 600);
+  if (succeeded(run))
+    return;
+  // The echo shows each command before it runs: the one before ERROR failed.
+  const auto [error, command] = run.error();
+  const std::string message = error.empty() ? ending(run) : error;
   const int line = command.empty() ? 0 : find_line(setup.template_file, command);
   std::ostringstream msg;
   msg << setup.template_file << ":" << (line > 0 ? std::to_string(line) : std::string("?"))
@@ -147,5 +204,17 @@ void check_rve_template(const RveSetup& setup, const int dim)
   if (!command.empty())
     msg << " (command: " << command << ")";
   throw TemplateError(msg.str());
+}
+
+void check_rve_state_file(const RveSetup& setup, const std::string& state_file, int seconds)
+{
+  const ChildRun run =
+    run_template_in_child(setup, {{"rve_restore", "1"}, {"rve_restart_file", state_file}}, seconds);
+  if (succeeded(run))
+    return;
+  // (the command echoed before a read_restart error is not the one that failed: not named)
+  const std::string error = run.error().first;
+  throw TemplateError("the saved RVE state cannot be restored: " + (error.empty() ? ending(run) : error) +
+                      " in a test restore of it with the template '" + setup.template_file + "'");
 }
 } // namespace fe2dem

@@ -31,4 +31,16 @@ public:
  *         "DATA_FILE:LINE: ..." for the packing.
  */
 void check_rve_template(const RveSetup& setup, int dim);
+
+/**
+ * Checks that the saved RVE state in @p state_file (a LIGGGHTS restart
+ * image, ServoRve::serialise) restores: @p setup's template with
+ * rve_restore = 1 and `run 0` in a child process, killed after @p seconds.
+ * A state damaged before it was fingerprinted can make LIGGGHTS crash
+ * (SIGSEGV) or stop with an error in read_restart, which would take the
+ * whole MPI job down without a word.
+ * @throws TemplateError "the saved RVE state cannot be restored: ..." (the
+ *         crash signal, LIGGGHTS' message, or the time limit).
+ */
+void check_rve_state_file(const RveSetup& setup, const std::string& state_file, int seconds);
 } // namespace fe2dem

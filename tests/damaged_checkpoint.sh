@@ -5,7 +5,13 @@
 #              back to the one before, and completes equal to REFERENCE;
 #   corrupted: 64 bytes in the middle of the newest overwritten -> the same;
 #   both:      every checkpoint damaged -> a clear error, exit 1;
-#   template:  the template copy changed -> --resume refused, naming it.
+#   template:  the template copy changed -> --resume refused, naming it;
+#   image:     64 bytes of RVE 0's image in the newest checkpoint overwritten
+#              and the fingerprint made again (a damage written before it was
+#              taken), at several offsets -> every --resume ends within 120 s,
+#              never by a signal, and a failure names the RVE; at least one
+#              offset is refused before any RVE is restored (the image test-
+#              restored in a child process; in-process it crashed LIGGGHTS).
 # Usage: damaged_checkpoint.sh FE2DEM PRM WORKDIR REFERENCE_OUT MODE
 set -uo pipefail
 exe=$1 prm=$2 work=$3 reference=$4 mode=$5
@@ -50,5 +56,33 @@ case $mode in
     out=$("$exe" case.prm --resume 2>&1) && fail "--resume exited 0 with a changed template"
     grep -qF "RVE/Template file content" <<<"$out" || fail "the message does not name the template: $(tail -n 4 <<<"$out")"
     echo "ok: refused: $(grep -F 'RVE/Template file content' <<<"$out" | head -n 1)" ;;
-  *) fail "MODE = $mode: use truncated, corrupted, both or template" ;;
+  image)
+    cp -r out out_stopped
+    refused=0
+    for offset in 1000 30000 37800 60000 70000; do
+      rm -rf out && cp -r out_stopped out
+      /usr/bin/python3 - "$newest" "$offset" <<'PY' || fail "could not damage the image"
+import sys, h5py
+path, offset = sys.argv[1], int(sys.argv[2])
+with h5py.File(path, "r+") as f:
+    d = f["rve"][sorted(f["rve"].keys())[0]]
+    a = d[()].copy(); a[offset:offset + 64] = 255; d[...] = a
+data = open(path, "rb").read()
+h = 14695981039346656037
+for b in data:
+    h = ((h ^ b) * 1099511628211) & 0xFFFFFFFFFFFFFFFF
+open(path + ".fnv", "w").write(f"{h:016x} {len(data)}\n")
+PY
+      timeout 120 "$exe" case.prm --resume > resumed.log 2>&1; rc=$?
+      [[ $rc -ne 124 ]] || fail "offset $offset: --resume hung (killed after 120 s)"
+      [[ $rc -lt 128 ]] || fail "offset $offset: --resume ended by signal $((rc - 128)): $(tail -n 2 resumed.log)"
+      if [[ $rc -ne 0 ]]; then
+        grep -q "RVE of IP" resumed.log || fail "offset $offset: the failure does not name the RVE: $(tail -n 2 resumed.log)"
+        grep -q "cannot be restored" resumed.log && refused=$((refused + 1))
+      fi
+      echo "offset $offset: exit $rc $(grep -m1 'error' resumed.log | cut -c1-160)"
+    done
+    [[ $refused -ge 1 ]] || fail "no damaged image was refused before restoring"
+    echo "ok: every damaged image ended the resume cleanly; $refused refused before any RVE was restored" ;;
+  *) fail "MODE = $mode: use truncated, corrupted, both, template or image" ;;
 esac

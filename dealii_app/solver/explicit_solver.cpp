@@ -139,8 +139,20 @@ void ExplicitSolver<dim>::make_constitutive_material(const std::string& checkpoi
   typename fe2dem::RvePool<dim>::StateSource states;
   if (!checkpoint.empty())
     states = [&](std::size_t k) { return read_rve_state(checkpoint, k); };
-  material_ = std::make_unique<RveMaterial<dim>>(factory, ip_, m.stability_modulus, m.density,
-                                                 m.skip_tolerance, states, static_cast<int>(step_));
+  try
+  {
+    material_ = std::make_unique<RveMaterial<dim>>(factory, ip_, m.stability_modulus, m.density,
+                                                   m.skip_tolerance, states, static_cast<int>(step_));
+  }
+  catch (const fe2dem::CouplerError& e)
+  {
+    if (checkpoint.empty())
+      throw;
+    // A saved state that does not restore (RvePool checks each before any is restored).
+    throw std::runtime_error("--resume: checkpoint '" + checkpoint + "': " + e.what() +
+                             ". Resume from an earlier checkpoint (move this one out of the checkpoint "
+                             "directory) or start the run again without --resume");
+  }
 }
 
 // One point per element: the mean-strain element data and the hourglass

@@ -80,6 +80,9 @@ wave() {
   # the same column driven at 1 um: a linear wave (strain amplitude 1e-4)
   run_macro wave_column_1um "$here/wave_column.prm" 2 "$small"
   run_macro wave_column_1um_elastic "$here/wave_column.prm" 1 "$elastic; $small"
+  # the 0.1 mm column at half the macro step (5 DEM steps of 1e-7 s, a check each)
+  local half="s#^  set Time step = 1e-6#  set Time step = 5e-7#; s#set Check interval        = 10#set Check interval        = 5#"
+  run_macro wave_column_half_step "$here/wave_column.prm" 2 "$half"
   wave_table
 }
 wave_table() {
@@ -88,6 +91,10 @@ wave_table() {
     echo "## driven at 0.1 mm ([LSYF])"
     $py "$here/wave.py" column "$r/constrained_modulus/out" "$r/wave_column/out" "$r/wave_column_elastic/out" \
       "$r/wave_column.png" 1e-4 "$r/constrained_modulus_1_percent/out"
+    echo "## driven at 0.1 mm, half the macro step (5e-7 s)"
+    [[ -f "$r/wave_column_half_step/out/history.h5" ]] &&
+      $py "$here/wave.py" column "$r/constrained_modulus/out" "$r/wave_column_half_step/out" "$r/wave_column_elastic/out" \
+        "$r/wave_column_half_step.png" 1e-4 "$r/constrained_modulus_1_percent/out"
     echo "## driven at 1 um (linear)"
     $py "$here/wave.py" column "$r/constrained_modulus/out" "$r/wave_column_1um/out" "$r/wave_column_1um_elastic/out" \
       "$r/wave_column_1um.png" 1e-6

@@ -6,6 +6,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <csignal>
 #include <chrono>
 #include <cstdlib>
@@ -67,6 +68,7 @@ struct ChildRun
 {
   int status = 0;          ///< waitpid's status
   bool timed_out = false;  ///< killed after the time limit
+  int wait_errno = 0;      ///< errno of a failed waitpid (status -1)
   std::vector<std::string> lines;
   /// The first line starting with ERROR and the template command echoed before it.
   std::pair<std::string, std::string> error() const
@@ -131,12 +133,23 @@ ChildRun run_template_in_child(const RveSetup& setup, const std::map<std::string
   {
     // A damaged state can make LIGGGHTS loop: poll, and kill it at the limit.
     const auto limit = std::chrono::steady_clock::now() + std::chrono::seconds(seconds);
-    while (waitpid(pid, &run.status, WNOHANG) == 0)
+    for (;;)
     {
+      const pid_t done = waitpid(pid, &run.status, WNOHANG);
+      if (done == pid)
+        break;
+      if (done < 0 && errno != EINTR)
+      {
+        run.status = -1; // lost track of the child: neither exited nor signalled, reported as such
+        run.wait_errno = errno;
+        break;
+      }
       if (std::chrono::steady_clock::now() > limit)
       {
         kill(pid, SIGKILL);
-        waitpid(pid, &run.status, 0);
+        while (waitpid(pid, &run.status, 0) < 0 && errno == EINTR)
+        {
+        }
         run.timed_out = true;
         break;
       }
@@ -160,6 +173,8 @@ std::string ending(const ChildRun& run)
 {
   if (run.timed_out)
     return "LIGGGHTS did not finish within the time limit (killed)";
+  if (run.status == -1)
+    return std::string("waiting for the LIGGGHTS child process failed: ") + std::strerror(run.wait_errno);
   if (WIFSIGNALED(run.status))
     return std::string("LIGGGHTS crashed (signal ") + std::to_string(WTERMSIG(run.status)) + ", " +
            strsignal(WTERMSIG(run.status)) + ")";

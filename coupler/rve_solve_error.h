@@ -21,7 +21,7 @@ public:
    */
   enum Status : int
   {
-    liggghts_error = -1, ///< LIGGGHTS itself raised an error (the RVE is back at its committed state)
+    liggghts_error = -1, ///< LIGGGHTS raised an error (the RVE is back at its committed state)
     over_budget = 2,     ///< the step budget ran out before the RVE converged (or came to rest)
     escaped = 3,         ///< an inner particle left the frame
     blown_up = 4,        ///< a non-finite position, velocity or force

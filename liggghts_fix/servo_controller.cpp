@@ -78,8 +78,8 @@ void ServoController<dim>::carry_drift(T& value, const T& before, T& drift)
 }
 
 template <int dim>
-void ServoController<dim>::correct_group(std::size_t e, const Vector& da, const Rotation& dm, double M, double R,
-                                         double dt, bool integral)
+void ServoController<dim>::correct_group(std::size_t e, const Vector& da, const Rotation& dm,
+                                         double M, double R, double dt, bool integral)
 {
   const double dt2 = dt * dt;
   if (integral)
@@ -107,7 +107,8 @@ void ServoController<dim>::correct_group(std::size_t e, const Vector& da, const 
 }
 
 template <int dim>
-void ServoController<dim>::correct_corner(const Rotation& dm, double M, double R, double dt, bool integral)
+void ServoController<dim>::correct_corner(const Rotation& dm, double M, double R, double dt,
+                                          bool integral)
 {
   const double dt2 = dt * dt;
   const Rotation before = theta_corner;

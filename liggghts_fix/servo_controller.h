@@ -65,7 +65,8 @@ public:
 
   /// @p groups groups, every unknown zero, every gain factor 1, no drift.
   void reset(std::size_t groups);
-  /// Every fluctuation and rotation back to zero, and the drift with them (keyword keep_fluctuations no).
+  /// Every fluctuation and rotation back to zero, and the drift with them (keyword
+  /// keep_fluctuations no).
   void zero_fluctuations();
   /// Forgets the drift (a new solve state, e.g. read from a restart file of an older version).
   void clear_drift();
@@ -77,8 +78,8 @@ public:
    * radius @p R, scaled by the adaptive factors.
    * @param integral with integral action (timed_servo integral)
    */
-  void correct_group(std::size_t e, const Vector& da, const Rotation& dm, double M, double R, double dt,
-                     bool integral);
+  void correct_group(std::size_t e, const Vector& da, const Rotation& dm, double M, double R,
+                     double dt, bool integral);
   /// The same for the corners' common rotation, under their summed moment @p dm.
   void correct_corner(const Rotation& dm, double M, double R, double dt, bool integral);
 

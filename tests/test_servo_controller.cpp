@@ -33,7 +33,8 @@ double imbalance_after(int n, bool integral)
 int main()
 {
   Checker c("servo_controller");
-  const double M = 1e-3, R = 1e-3, dt = 1e-6; // gains 5, 10: g_a dt^2/M = 5e-9 m/N, g_m dt^2/(M R^2) = 1e-2 /(N m)
+  // gains 5, 10: g_a dt^2/M = 5e-9 m/N, g_m dt^2/(M R^2) = 1e-2 /(N m)
+  const double M = 1e-3, R = 1e-3, dt = 1e-6;
 
   Servo3 s;
   s.reset(2);

@@ -29,8 +29,11 @@ double distance(const Eigen::Matrix<double, dim, dim>& F, const std::array<doubl
 template <int dim>
 RvePool<dim>::RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
                       const std::vector<QuadraturePoint>& points)
-  : RvePool(comm, factory, points, 0, [this](std::size_t) { return factory_->create(); })
+  : RvePool(comm, factory, points, 0)
 {
+  for (std::size_t k = 0; k < points_.size(); ++k)
+    if (owner_[k] == rank_)
+      local_[k] = factory_->create();
 }
 
 // The saved states are checked, all of them and collectively, before any is
@@ -40,48 +43,19 @@ template <int dim>
 RvePool<dim>::RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
                       const std::vector<QuadraturePoint>& points, const StateSource& state_of,
                       int load_step)
-  : RvePool(
-      comm, factory, points, load_step,
-      [this](std::size_t k) {
-        const std::vector<char> state = std::move(saved_states_.at(k));
-        saved_states_.erase(k);
-        return factory_->restore(state);
-      },
-      [this, &state_of] { check_saved_states(state_of); })
+  : RvePool(comm, factory, points, load_step)
 {
-}
-
-template <int dim>
-RvePool<dim>::RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
-                      const std::vector<QuadraturePoint>& points, int load_step, const Make& make,
-                      const std::function<void()>& before_make)
-  : comm_(comm), factory_(std::move(factory)), points_(points), owner_(points.size()),
-    cost_(points.size(), 0.0), load_step_(load_step)
-{
-  MPI_Comm_rank(comm_, &rank_);
-  MPI_Comm_size(comm_, &n_ranks_);
-  check_factory(); // before any instance exists
-  place_in_blocks();
-  if (before_make)
-    before_make();
-  for (std::size_t k = 0; k < points_.size(); ++k)
-    if (owner_[k] == rank_)
-      local_[k] = make(k);
-}
-
-template <int dim>
-void RvePool<dim>::check_saved_states(const StateSource& state_of)
-{
+  std::map<std::size_t, std::vector<char>> states;
   int failed = INT_MAX;
   std::string reason;
   for (std::size_t k = 0; k < points_.size(); ++k)
     if (owner_[k] == rank_)
     {
-      saved_states_[k] = state_of(k);
+      states[k] = state_of(k);
       if (failed == INT_MAX)
         try
         {
-          factory_->check_state(saved_states_[k]);
+          factory_->check_state(states[k]);
         }
         catch (const std::runtime_error& e)
         {
@@ -89,29 +63,49 @@ void RvePool<dim>::check_saved_states(const StateSource& state_of)
           reason = e.what();
         }
     }
-  int first_failed = INT_MAX;
-  MPI_Allreduce(&failed, &first_failed, 1, MPI_INT, MPI_MIN, comm_);
-  if (first_failed == INT_MAX)
-    return;
-  int length = static_cast<int>(reason.size());
-  MPI_Bcast(&length, 1, MPI_INT, owner_[first_failed], comm_);
-  reason.resize(length);
-  MPI_Bcast(&reason[0], length, MPI_CHAR, owner_[first_failed], comm_);
-  saved_states_.clear();
-  throw CouplerError(points_[first_failed].id,
-                     describe(first_failed) + ", saved at load step " + std::to_string(load_step_) + ": " + reason);
+  raise_first_failure(failed, reason, ", saved at load step " + std::to_string(load_step_));
+  for (auto& [k, state] : states)
+    local_[k] = factory_->restore(state);
 }
 
 template <int dim>
-std::string RvePool<dim>::describe(std::size_t k) const
+RvePool<dim>::RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
+                      const std::vector<QuadraturePoint>& points, int load_step)
+  : comm_(comm), factory_(std::move(factory)), points_(points), owner_(points.size()),
+    cost_(points.size(), 0.0), load_step_(load_step)
 {
-  const QuadraturePoint& p = points_[k];
+  MPI_Comm_rank(comm_, &rank_);
+  MPI_Comm_size(comm_, &n_ranks_);
+  check_factory(); // before any instance exists
+  place_in_blocks();
+}
+
+template <int dim>
+std::string RvePool<dim>::broadcast(std::string text, int root) const
+{
+  int length = static_cast<int>(text.size());
+  MPI_Bcast(&length, 1, MPI_INT, root, comm_);
+  text.resize(length);
+  if (length > 0)
+    MPI_Bcast(&text[0], length, MPI_CHAR, root, comm_);
+  return text;
+}
+
+template <int dim>
+void RvePool<dim>::raise_first_failure(int failed, const std::string& reason, const std::string& when) const
+{
+  int first = INT_MAX;
+  MPI_Allreduce(&failed, &first, 1, MPI_INT, MPI_MIN, comm_);
+  if (first == INT_MAX)
+    return;
+  const std::string why = broadcast(reason, owner_[first]);
+  const QuadraturePoint& p = points_[first];
   std::ostringstream msg;
   msg << "RVE of IP " << p.id << " at (" << p.position[0];
   for (int d = 1; d < dim; ++d)
     msg << ", " << p.position[d];
-  msg << ")";
-  return msg.str();
+  msg << ")" << when << ": " << why;
+  throw CouplerError(p.id, msg.str());
 }
 
 // The factory's input (e.g. the LIGGGHTS template) is checked once, in a
@@ -130,14 +124,9 @@ void RvePool<dim>::check_factory() const
     {
       problem = e.what();
     }
-  int length = static_cast<int>(problem.size());
-  MPI_Bcast(&length, 1, MPI_INT, 0, comm_);
-  if (length > 0)
-  {
-    problem.resize(length);
-    MPI_Bcast(&problem[0], length, MPI_CHAR, 0, comm_);
+  problem = broadcast(problem, 0);
+  if (!problem.empty())
     throw std::runtime_error(problem);
-  }
 }
 
 template <int dim>
@@ -239,17 +228,7 @@ std::vector<RveResponse<dim>> RvePool<dim>::solve(const std::vector<Tensor>& F)
   local_seconds_ = MPI_Wtime() - t0;
 
   // Failures first, so that every rank raises the same error.
-  int first_failed = INT_MAX;
-  MPI_Allreduce(&failed, &first_failed, 1, MPI_INT, MPI_MIN, comm_);
-  if (first_failed != INT_MAX)
-  {
-    int length = static_cast<int>(reason.size());
-    MPI_Bcast(&length, 1, MPI_INT, owner_[first_failed], comm_);
-    reason.resize(length);
-    MPI_Bcast(&reason[0], length, MPI_CHAR, owner_[first_failed], comm_);
-    throw CouplerError(points_[first_failed].id,
-                       describe(first_failed) + ", load step " + std::to_string(load_step_ + 1) + ": " + reason);
-  }
+  raise_first_failure(failed, reason, ", load step " + std::to_string(load_step_ + 1));
 
   // rve_to_macro: every rank gets every IP's result.
   const int my_count = static_cast<int>(mine.size());

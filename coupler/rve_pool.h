@@ -128,19 +128,17 @@ public:
   double last_local_loop_seconds() const { return local_loop_seconds_; }
 
 private:
-  using Make = std::function<std::unique_ptr<Rve<dim>>(std::size_t k)>;
-  /// Shared by the public constructors: @p make builds this rank's RVE k.
+  /// Shared by the public constructors, which then make this rank's RVEs.
   RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
-          const std::vector<QuadraturePoint>& points, int load_step, const Make& make,
-          const std::function<void()>& before_make = {});
+          const std::vector<QuadraturePoint>& points, int load_step);
+  /// @p text of rank @p root on every rank. Collective.
+  std::string broadcast(std::string text, int root) const;
   /**
-   * Reads this rank's saved states into saved_states_ and has the factory
-   * check each (RveFactory::check_state) before any is restored; the first
-   * failure in IP order is raised on every rank as a CouplerError.
+   * Collective: if any rank has a failure (@p failed = its RVE index, else
+   * INT_MAX), raises on every rank a CouplerError for the lowest index:
+   * "RVE of IP <id> at (x, y[, z])<when>: <its rank's reason>".
    */
-  void check_saved_states(const StateSource& state_of);
-  /// "RVE of IP <id> at (x, y[, z])" for messages.
-  std::string describe(std::size_t k) const;
+  void raise_first_failure(int failed, const std::string& reason, const std::string& when) const;
   void require_committed(const char* what) const;
   /// factory_->check() on rank 0; its message raised on every rank.
   void check_factory() const;
@@ -153,8 +151,6 @@ private:
   std::vector<QuadraturePoint> points_;
   std::vector<int> owner_;
   std::map<std::size_t, std::unique_ptr<Rve<dim>>> local_;
-  /// A resumed pool's saved states of this rank while it is built (empty after).
-  std::map<std::size_t, std::vector<char>> saved_states_;
   std::vector<double> cost_;
   int load_step_ = 0;
   bool committed_ = true;

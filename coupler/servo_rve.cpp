@@ -77,6 +77,17 @@ std::vector<char> read_bytes(const std::string& file)
   return std::vector<char>(std::istreambuf_iterator<char>(in), {});
 }
 
+/// Removes @p file when it goes out of scope, whatever way (ENOENT included: a renamed file).
+struct RemovedAtExit
+{
+  std::string file;
+  ~RemovedAtExit()
+  {
+    std::error_code ec;
+    std::filesystem::remove(file, ec);
+  }
+};
+
 void write_bytes(const std::string& file, const std::vector<char>& bytes)
 {
   std::ofstream out(file, std::ios::binary);
@@ -118,11 +129,11 @@ template <int dim>
 std::unique_ptr<ServoRve<dim>> ServoRve<dim>::restore(const RveSetup& setup, const std::vector<char>& state,
                                             HistoryMode mode)
 {
-  const std::string file = state_file("restore");
-  write_bytes(file, state);
-  std::unique_ptr<ServoRve> rve(new ServoRve(setup, mode, file, FromRestart{}));
+  const RemovedAtExit image{state_file("restore")}; // if the restore fails; renamed if not
+  write_bytes(image.file, state);
+  std::unique_ptr<ServoRve> rve(new ServoRve(setup, mode, image.file, FromRestart{}));
   // The restored state is the one to return to: commit it.
-  std::filesystem::rename(file, rve->committed_file_);
+  std::filesystem::rename(image.file, rve->committed_file_);
   rve->committed_bytes_ = state.size();
   rve->at_committed_state_ = true;
   rve->committed_F_ = rve->fix_->result().F;
@@ -459,20 +470,9 @@ public:
   // this process would end the MPI job without a word.
   void check_state(const std::vector<char>& state) const override
   {
-    const std::string file = state_file("check");
-    write_bytes(file, state);
-    try
-    {
-      check_rve_state_file(setup_, file, 120);
-    }
-    catch (...)
-    {
-      std::error_code ec;
-      std::filesystem::remove(file, ec);
-      throw;
-    }
-    std::error_code ec;
-    std::filesystem::remove(file, ec);
+    const RemovedAtExit image{state_file("check")};
+    write_bytes(image.file, state);
+    check_rve_state_file(setup_, image.file, 120);
   }
 
 private:

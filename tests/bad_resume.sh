@@ -5,6 +5,7 @@
 # Usage: bad_resume.sh FE2DEM PRM WORKDIR
 set -uo pipefail
 exe=$1 prm=$2 work=$3
+tests=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
 fail() { echo "FAIL: $*"; exit 1; }
 { sed 's#^set Output directory.*#set Output directory = out#' "$prm"
@@ -34,12 +35,8 @@ import sys, h5py
 path = sys.argv[1]
 with h5py.File(path, "r+") as f:
     f.attrs["format"] = f.attrs["format"] - 1
-data = open(path, "rb").read()
-h = 14695981039346656037
-for b in data:
-    h = ((h ^ b) * 1099511628211) & 0xFFFFFFFFFFFFFFFF
-open(path + ".fnv", "w").write(f"{h:016x} {len(data)}\n")
 PY
+  /usr/bin/python3 "$tests/refingerprint.py" "$f" || fail "could not fingerprint $f"
 done
 out=$("$exe" case.prm --resume 2>&1) && fail "--resume of an older checkpoint format exited 0"
 echo "$out" | tail -n 2

@@ -67,12 +67,8 @@ path, offset = sys.argv[1], int(sys.argv[2])
 with h5py.File(path, "r+") as f:
     d = f["rve"][sorted(f["rve"].keys())[0]]
     a = d[()].copy(); a[offset:offset + 64] = 255; d[...] = a
-data = open(path, "rb").read()
-h = 14695981039346656037
-for b in data:
-    h = ((h ^ b) * 1099511628211) & 0xFFFFFFFFFFFFFFFF
-open(path + ".fnv", "w").write(f"{h:016x} {len(data)}\n")
 PY
+      /usr/bin/python3 "$tests/refingerprint.py" "$newest" || fail "could not fingerprint $newest"
       timeout 120 "$exe" case.prm --resume > resumed.log 2>&1; rc=$?
       [[ $rc -ne 124 ]] || fail "offset $offset: --resume hung (killed after 120 s)"
       [[ $rc -lt 128 ]] || fail "offset $offset: --resume ended by signal $((rc - 128)): $(tail -n 2 resumed.log)"

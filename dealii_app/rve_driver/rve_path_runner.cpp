@@ -206,24 +206,25 @@ unsigned int RvePathRunner<dim>::control_components(Matrix& F, const std::vector
   const double scale = std::max(prm_.path.pressure, 1e-12);
   const double tol = prm_.path.stress_tolerance * scale;
   Matrix F_prev = F;
-  Matrix s_prev = rve_->response().sigma;
+  Matrix sigma = rve_->response().sigma; // of the last solve
+  Matrix s_prev = sigma;
   bool first = true;
   for (unsigned int it = 1; it <= prm_.path.max_stress_iterations; ++it)
   {
     // secant slope per component from the last change, if it has the right sign
     if (!first && !(F_moved_elsewhere && it == 2))
       for (int c : comps)
-        if (F[c] != F_prev[c] && (rve_->response().sigma[c] - s_prev[c]) / (F[c] - F_prev[c]) > 0.0)
-          slopes_[c] = (rve_->response().sigma[c] - s_prev[c]) / (F[c] - F_prev[c]);
+        if (F[c] != F_prev[c] && (sigma[c] - s_prev[c]) / (F[c] - F_prev[c]) > 0.0)
+          slopes_[c] = (sigma[c] - s_prev[c]) / (F[c] - F_prev[c]);
     first = false;
     F_prev = F;
-    s_prev = rve_->response().sigma;
+    s_prev = sigma;
     for (std::size_t k = 0; k < comps.size(); ++k)
       F[comps[k]] += std::clamp((targets[k] - s_prev[comps[k]]) / slopes_[comps[k]], -0.01, 0.01);
-    solve(F);
+    sigma = solve(F).sigma;
     bool done = true;
     for (std::size_t k = 0; k < comps.size(); ++k)
-      done = done && std::abs(rve_->response().sigma[comps[k]] - targets[k]) <= tol;
+      done = done && std::abs(sigma[comps[k]] - targets[k]) <= tol;
     if (done)
       return it;
   }

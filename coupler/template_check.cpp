@@ -111,10 +111,12 @@ ChildRun run_template_in_child(const RveSetup& setup, const std::map<std::string
   argv.push_back(nullptr);
   // A child of an MPI rank must not see the launcher's variables, or it
   // would try to join the parent's job instead of starting as a singleton.
+  // Under `srun` (direct launch) Open MPI takes SLURM_STEP_ID as "started by
+  // srun" and stops in MPI_Init without PMI: the child gets no SLURM_ either.
   std::vector<std::string> env;
   for (char** e = environ; *e; ++e)
     if (std::strncmp(*e, "OMPI_", 5) && std::strncmp(*e, "PMIX_", 5) && std::strncmp(*e, "PMI_", 4) &&
-        std::strncmp(*e, "OPAL_", 5))
+        std::strncmp(*e, "OPAL_", 5) && std::strncmp(*e, "SLURM_", 6))
       env.emplace_back(*e);
   std::vector<char*> envp;
   for (auto& e : env)

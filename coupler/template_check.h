@@ -25,7 +25,8 @@ public:
  * Checks @p setup's packing data file (variable rve_data, packing_check.h)
  * for a @p dim-dimensional RVE, then runs @p setup's template with its
  * variables and `run 0` in a child process. The child is `fe2dem-liggghts` from this build (or the path in
- * the environment variable FE2DEM_LIGGGHTS); MPI launcher variables are
+ * the environment variable FE2DEM_LIGGGHTS); MPI launcher variables
+ * (OMPI_, PMIX_, PMI_, OPAL_, and SLURM_ for a launch by `srun`) are
  * removed from its environment so that it starts as a singleton.
  * @throws TemplateError "FILE:LINE: LIGGGHTS error: MESSAGE (command: ...)", or
  *         "DATA_FILE:LINE: ..." for the packing.

@@ -12,6 +12,7 @@ packages=(
   libhdf5-openmpi-dev               # the HDF5 build deal.II links (see architecture.md)
   python3 python3-numpy python3-matplotlib python3-h5py   # plots, post-processing
   python3-vtk9                      # tests read the VTU outputs as ParaView does (VTK 9.1)
+  slurmctld slurmd slurm-client munge   # the batch script's test on a one-node SLURM
 )
 
 missing=()

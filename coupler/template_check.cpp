@@ -1,6 +1,7 @@
 #include "template_check.h"
 #include "packing_check.h"
 
+#include <poll.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <fcntl.h>
@@ -15,7 +16,6 @@
 #include <fstream>
 #include <map>
 #include <sstream>
-#include <thread>
 #include <utility>
 #include <vector>
 
@@ -88,23 +88,18 @@ struct ChildRun
 /**
  * Runs @p setup's template with its variables and @p extra ones, then `run
  * 0 post no`, in a child fe2dem-liggghts; kills it after @p seconds.
+ * The commands go in on the child's stdin and its screen output comes back
+ * through a pipe, so no file is left behind when the parent is ended by a
+ * signal (a second SIGTERM, SIGKILL) during the check.
  * @throws TemplateError if the child cannot be started.
  */
 ChildRun run_template_in_child(const RveSetup& setup, const std::map<std::string, std::string>& extra,
                                int seconds)
 {
-  namespace fs = std::filesystem;
-  const std::string base = (fs::temp_directory_path() / ("fe2dem-check-" + std::to_string(getpid()))).string();
-  const std::string wrapper = base + ".in", output = base + ".out";
-  {
-    std::ofstream w(wrapper);
-    w << "include " << setup.template_file << "\nrun 0 post no\n";
-  }
   std::vector<std::string> args = {executable(), "-echo", "screen", "-log", "none"};
   for (const auto* vars : {&setup.variables, &extra})
     for (const auto& [name, value] : *vars)
       args.insert(args.end(), {"-var", name, value});
-  args.insert(args.end(), {"-in", wrapper});
   std::vector<char*> argv;
   for (auto& a : args)
     argv.push_back(&a[0]);
@@ -123,20 +118,56 @@ ChildRun run_template_in_child(const RveSetup& setup, const std::map<std::string
     envp.push_back(&e[0]);
   envp.push_back(nullptr);
 
+  // The input is written before the child starts (a few hundred bytes fit
+  // in the pipe), so the parent never writes to a pipe whose reader is gone.
+  int in[2], out[2];
+  if (pipe2(in, O_CLOEXEC) != 0)
+    throw TemplateError(std::string("cannot create a pipe to check the RVE template: ") + std::strerror(errno));
+  if (pipe2(out, O_CLOEXEC) != 0)
+  {
+    const int e = errno;
+    close(in[0]), close(in[1]);
+    throw TemplateError(std::string("cannot create a pipe to check the RVE template: ") + std::strerror(e));
+  }
+  const std::string input = "include " + setup.template_file + "\nrun 0 post no\n";
+  const bool written = write(in[1], input.data(), input.size()) == static_cast<ssize_t>(input.size());
+  const int write_errno = errno;
+  close(in[1]);
+  if (!written)
+  {
+    close(in[0]), close(out[0]), close(out[1]);
+    throw TemplateError(std::string("cannot write the commands for the RVE template check: ") +
+                        std::strerror(write_errno));
+  }
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, output.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, in[0], STDIN_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, out[1], STDERR_FILENO);
   pid_t pid = 0;
   const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&actions);
+  close(in[0]);
+  close(out[1]);
   ChildRun run;
+  std::string text;
   if (spawned == 0)
   {
-    // A damaged state can make LIGGGHTS loop: poll, and kill it at the limit.
+    // A damaged state can make LIGGGHTS loop: read its output as it comes,
+    // and kill it at the limit.
+    fcntl(out[0], F_SETFL, O_NONBLOCK);
+    const auto drain = [&] {
+      char buffer[4096];
+      ssize_t n;
+      while ((n = read(out[0], buffer, sizeof buffer)) > 0)
+        text.append(buffer, static_cast<std::size_t>(n));
+    };
     const auto limit = std::chrono::steady_clock::now() + std::chrono::seconds(seconds);
     for (;;)
     {
+      pollfd readable{out[0], POLLIN, 0};
+      poll(&readable, 1, 20);
+      drain();
       const pid_t done = waitpid(pid, &run.status, WNOHANG);
       if (done == pid)
         break;
@@ -155,18 +186,16 @@ ChildRun run_template_in_child(const RveSetup& setup, const std::map<std::string
         run.timed_out = true;
         break;
       }
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
+    drain();
   }
-  std::ifstream in(output);
-  for (std::string l; std::getline(in, l);)
-    run.lines.push_back(l);
-  std::error_code ec;
-  fs::remove(wrapper, ec);
-  fs::remove(output, ec);
+  close(out[0]);
   if (spawned != 0)
     throw TemplateError("cannot start '" + args[0] + "' to check the RVE template: " +
                         std::strerror(spawned) + " (set FE2DEM_LIGGGHTS to its path)");
+  std::istringstream lines(text);
+  for (std::string l; std::getline(lines, l);)
+    run.lines.push_back(l);
   return run;
 }
 

@@ -5,7 +5,7 @@
 # signal) must end the process with a message and exit status 128 + the
 # signal handled second, without a checkpoint, and remove the shared-memory files it had
 # mapped (on 2 ranks Open MPI's segments, which killed runs used to leave in
-# /dev/shm). Its RVE images in /dev/shm are removed by the next run
+# /dev/shm) and leave no file of its own in TMPDIR. Its RVE images in /dev/shm are removed by the next run
 # (shm_images_removed). On 2 ranks the signals go to every rank, as a batch
 # system sends them; the status checked is then mpiexec's (not 0).
 # Usage: second_signal.sh FE2DEM PRM WORKDIR NP
@@ -33,4 +33,9 @@ fi
 grep -q "a second stop signal: ending at once" stopped.log || { echo "FAIL: no message"; exit 1; }
 [[ -z $(find out -name 'checkpoint-*' 2>/dev/null) ]] || { echo "FAIL: a checkpoint was written"; exit 1; }
 for f in $mapped; do [[ ! -e $f ]] || { echo "FAIL: $f is still there"; exit 1; }; done
-echo "ok: exit code $rc with a message, no checkpoint, mapped shared-memory files removed: ${mapped:-none}"
+# The template check's child talks through pipes: nothing of fe2dem's in
+# TMPDIR. (Open MPI's session directories, tmp/ompi.*, may stay: a process
+# ended at once cannot have Open MPI remove them.)
+left=$(find tmp -mindepth 1 -not -path 'tmp/ompi.*')
+[[ -z $left ]] || { echo "FAIL: left in TMPDIR: $left"; exit 1; }
+echo "ok: exit code $rc with a message, no checkpoint, mapped shared-memory files removed: ${mapped:-none}; TMPDIR empty"

@@ -1,9 +1,11 @@
 # Sourced by sigterm_stuck_solve.sh and second_signal.sh: starts fe2dem on
 # a run whose RVE solves never converge (relaxation and servo tolerances
 # unreachable, an endless step budget) in WORKDIR, on NP ranks, output in
-# WORKDIR/stopped.log, and returns once fe2dem has built its RVEs, so that
-# its signal handlers are installed and it is inside a solve. Sets pid (the
-# process started: fe2dem or mpiexec).
+# WORKDIR/stopped.log, and returns once fe2dem starts building its RVEs, so
+# that its signal handlers are installed and it is in the template check (a
+# child fe2dem-liggghts) or in a solve. TMPDIR is WORKDIR/tmp, for the
+# callers to check that nothing is left there. Sets pid (the process
+# started: fe2dem or mpiexec).
 # Usage: start_stuck_run FE2DEM PRM WORKDIR NP   (the caller is then in WORKDIR)
 start_stuck_run() {
   local exe=$1 prm=$2 work=$3 np=$4
@@ -12,6 +14,7 @@ start_stuck_run() {
     printf '\nsubsection RVE\n  set Relaxation tolerance = 1e-30\n  set Servo tolerance = 1e-30\n'
     printf '  set Step budget = 1000000000\nend\n'; } > "$work/case.prm"
   cd "$work" || exit 1
+  mkdir tmp; export TMPDIR=$work/tmp
   if [[ $np -eq 1 ]]; then "$exe" case.prm > stopped.log 2>&1 &
   else mpiexec --allow-run-as-root --oversubscribe -np "$np" "$exe" case.prm > stopped.log 2>&1 &
   fi

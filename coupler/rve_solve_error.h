@@ -25,7 +25,8 @@ public:
     over_budget = 2,     ///< the step budget ran out before the RVE converged (or came to rest)
     escaped = 3,         ///< an inner particle left the frame
     blown_up = 4,        ///< a non-finite position, velocity or force
-    overlapped = 5       ///< a contact overlaps beyond the template's max_overlap
+    overlapped = 5,      ///< a contact overlaps beyond the template's max_overlap
+    stalled = 6          ///< no progress towards convergence for the template's stall_steps
   };
   RveSolveError(int s, const std::string& what) : std::runtime_error(what), status(s) {}
   /// one of Status

@@ -31,7 +31,8 @@ constexpr bool same_status_codes()
 {
   using Fix = LAMMPS_NS::FixRveServo<dim>;
   return int{RveSolveError::over_budget} == int{Fix::over_budget} && int{RveSolveError::escaped} == int{Fix::escaped} &&
-         int{RveSolveError::blown_up} == int{Fix::blown_up} && int{RveSolveError::overlapped} == int{Fix::overlapped};
+         int{RveSolveError::blown_up} == int{Fix::blown_up} && int{RveSolveError::overlapped} == int{Fix::overlapped} &&
+         int{RveSolveError::stalled} == int{Fix::stalled};
 }
 static_assert(same_status_codes<2>() && same_status_codes<3>());
 

@@ -28,6 +28,10 @@
  *                              of a typical contact force at any pressure. Default inertia
  *     check_every N            steps between convergence checks, default 50
  *     max_steps N              step budget of one solve, default 2000000
+ *     stall_steps N            progress watchdog: a solve whose distance from
+ *                              convergence, max(r_a/servo_tol, relaxation measure/TOL),
+ *                              has not fallen below 0.9 x its best for N DEM steps
+ *                              fails as stalled; 0: off. Default 1000000
  *     start keep|reset         keep or reset frame fluctuations at a new F, default keep
  *     inner_start keep|affine  at a new F the inner particles start where they are and
  *                              follow the frame through contacts (keep, [LBS]), or move
@@ -128,7 +132,8 @@ public:
     over_budget = 2,     ///< max_steps reached without convergence
     escaped = 3,         ///< an inner particle left the frame
     blown_up = 4,        ///< non-finite position, velocity or force
-    overlapped = 5       ///< a contact overlaps beyond max_overlap
+    overlapped = 5,      ///< a contact overlaps beyond max_overlap
+    stalled = 6          ///< no progress towards convergence for stall_steps steps
   };
 
   /**
@@ -268,6 +273,9 @@ private:
   void homogenise(double ekin);
   /// Relaxation test, convergence decision or servo correction at a check.
   void servo_check(double ekin);
+  /// Progress watchdog at a check with the frame at rest: false (and the
+  /// solve failed as stalled) after stall_steps steps without progress.
+  bool progressing(double residual, double ekin);
   /// The relaxation criterion (relax ekin_epot | unbalanced) with contact statistics @p c.
   bool relaxed_with(const fe2dem::ContactStatistics<dim>& c, double ekin) const;
   double servo_residual() const;
@@ -344,6 +352,7 @@ private:
   bool servo_scale_contact_ = false; ///< servo_scale contact (else inertia, R14)
   int check_every_ = 50;
   long max_steps_ = 2000000;
+  long stall_steps_ = 1000000;
   bool keep_fluctuations_ = true;
   bool affine_inner_ = false; ///< inner_start affine
   double move_rate_ = 1e-3;
@@ -394,6 +403,8 @@ private:
   std::vector<int> physical_of_;  ///< dense index -> dense index of its physical particle
   int n_inner_ = 0;
   int checks_since_contact_pass_ = 0;
+  double progress_best_ = 0.0; ///< smallest distance from convergence of this solve (watchdog)
+  long progress_step_ = 0;     ///< DEM step of the solve at which progress_best_ was set
   double dtv_ = 0.0, dtf_ = 0.0;
   bool restored_ = false; ///< state came from a restart file
 

@@ -117,6 +117,7 @@ const char* FixRveServo<dim>::status_name(Status s)
     case escaped: return "particle escaped the frame";
     case blown_up: return "blow-up (non-finite values)";
     case overlapped: return "overlap beyond max_overlap";
+    case stalled: return "no progress towards convergence";
   }
   return "unknown";
 }

@@ -33,6 +33,8 @@ void FixRveServo<dim>::begin_solve(const Tensor* F)
   result_.membrane_steps = 0;
   result_.residual = std::numeric_limits<double>::infinity(); // not evaluated yet
   checks_since_contact_pass_ = 1 << 30; // first relaxed check of a solve: fresh contact pass
+  progress_best_ = std::numeric_limits<double>::infinity();
+  progress_step_ = 0;
   solve_pending_ = false;
   schedule_frame_move(F_before);
   if (timed_steps_ > 0)
@@ -126,6 +128,8 @@ void FixRveServo<dim>::servo_check(double ekin)
   const int refresh_checks = 10;
   const bool cache_fresh = checks_since_contact_pass_ < refresh_checks;
   const double residual = servo_residual();
+  if (!progressing(residual, ekin))
+    return;
   bool relaxed = cache_fresh && relaxed_with(result_.contacts, ekin);
   if (relaxed && residual > servo_tol_)
   {
@@ -151,6 +155,45 @@ void FixRveServo<dim>::servo_check(double ekin)
     status_ = converged;
   else
     apply_servo_correction();
+}
+
+// The distance from convergence is the larger of the servo residual and the
+// relaxation measure, each over its tolerance (1 at convergence), the latter
+// with the energies of the last contact pass. It falls while a solve works
+// (the servo corrections, the damping); a solve whose tolerances cannot be
+// reached ends on the noise of the packing and would otherwise run to
+// max_steps, which a user may have set to "never". Counted in DEM steps, so
+// the outcome does not depend on timing or on the rank count.
+template <int dim>
+bool FixRveServo<dim>::progressing(double residual, double ekin)
+{
+  if (stall_steps_ <= 0)
+    return true;
+  const fe2dem::ContactStatistics<dim>& c = result_.contacts;
+  const double inf = std::numeric_limits<double>::infinity();
+  double relaxation = inf; // no contact pass yet
+  if (criterion_unbalanced_ && c.mean_force_sq > 0.0)
+    relaxation = std::sqrt(unbalanced_sq_sum_ / std::max(n_inner_, 1) / c.mean_force_sq) / relax_tol_;
+  else if (!criterion_unbalanced_ && c.potential_energy > 0.0)
+    relaxation = ekin / (relax_tol_ * c.potential_energy);
+  const double distance = std::max(residual / servo_tol_, relaxation);
+  const long step = result_.dem_steps;
+  if (distance < 0.9 * progress_best_)
+  {
+    progress_best_ = distance;
+    progress_step_ = step;
+    return true;
+  }
+  if (step - progress_step_ < stall_steps_)
+    return true;
+  std::ostringstream msg;
+  msg << "the distance from convergence, max(r_a/servo_tol, relaxation/tol), has not fallen below 0.9 x its "
+      << "best (" << progress_best_ << " at DEM step " << progress_step_ << " of this solve) in the "
+      << step - progress_step_ << " DEM steps since (stall_steps = " << stall_steps_ << "): now " << distance
+      << " (r_a = " << residual << ", servo_tol = " << servo_tol_ << ", relax tol = " << relax_tol_
+      << "); the tolerances may be below what this packing reaches";
+  fail(stalled, msg.str());
+  return false;
 }
 
 template <int dim>

@@ -215,6 +215,12 @@ void RveParameters::declare_parameters(dealii::ParameterHandler& prm)
                     "DEM steps between convergence checks (and C++ run chunk length).");
   prm.declare_entry("Step budget", "2000000", Integer(1),
                     "Largest number of DEM steps one RVE solve may take.");
+  prm.declare_entry("Stall steps", "1000000", Integer(0),
+                    "Progress watchdog: an RVE solve whose distance from convergence (the larger "
+                    "of r_a / Servo tolerance and the relaxation measure / Relaxation tolerance) "
+                    "has not fallen below 0.9 x its best for this many DEM steps fails as "
+                    "stalled (an RVE fault, subsection Faults), whatever the Step budget; "
+                    "0: off.");
   prm.declare_entry("Solve drive", "servo iterations", Selection("servo iterations|continuous"),
                     "How a quasi-static solve takes the RVE to a new F (timed solves of explicit "
                     "dynamics are not affected). servo iterations ([LBS] R14): the frame moves "
@@ -259,6 +265,7 @@ void RveParameters::parse_parameters(dealii::ParameterHandler& prm, const std::s
   gain_m = prm.get_double("Moment gain");
   check_interval = prm.get_integer("Check interval");
   step_budget = prm.get_integer("Step budget");
+  stall_steps = prm.get_integer("Stall steps");
   membrane = prm.get("Frame membrane");
   max_overlap = prm.get_double("Max overlap");
   solve_drive = prm.get("Solve drive");
@@ -341,6 +348,7 @@ std::map<std::string, std::string> RveParameters::entry_variables() const
           {"servo_scale", servo_scale},
           {"check_every", std::to_string(check_interval)},
           {"max_steps", std::to_string(step_budget)},
+          {"stall_steps", std::to_string(stall_steps)},
           {"start", start},
           {"inner_start", inner_start},
           {"membrane", membrane},

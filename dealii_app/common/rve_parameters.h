@@ -54,6 +54,7 @@ struct RveParameters
   std::string servo_scale; ///< inertia (R14) | contact
   std::string inner_start; ///< auto | keep | affine; resolve_inner_start() replaces auto
   unsigned int check_interval, step_budget;
+  unsigned int stall_steps; ///< progress watchdog of a solve, DEM steps (0: off)
   std::string membrane; ///< yes | no: frame membrane of fix rve/servo
   double max_overlap;   ///< largest overlap / smaller radius
   std::string solve_drive;       ///< servo iterations | continuous (RveSetup::solve_drive)

@@ -47,6 +47,8 @@ set(FE2DEM_LONG_RUNS
   macro_dynamic_rve_triaxial_slow macro_dynamic_rve_shear_fast macro_dynamic_rve_shear_slow
   # the shipped 2x4 example to 1.5 % against the strict [LBS] run (32 RVEs, 2 ranks)
   macro_example_biaxial_2x4_vs_strict
+  # the shipped examples not run elsewhere, as shipped (minutes each)
+  macro_example_biaxial_1x1_as_shipped rve_example_triaxial_3d_as_shipped
   # [LSYF] problem 2 at full size: the linear wave column and its M (minutes)
   macro_lsyf_constrained_modulus macro_lsyf_wave_column_1um
   # slow loading against the continuous reference (the column stays)

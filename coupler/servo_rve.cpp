@@ -256,10 +256,13 @@ void ServoRve<dim>::timed_solve(const Matrix& F, long steps, TimedTally& tally)
 
 // Timed solves at F until the fix's own quasi-static test (relaxed,
 // balanced) passes at the end of one, all of them, the approach of a
-// continuous solve included, within the step budget.
+// continuous solve included, within the step budget; a hold that stops
+// coming closer to rest fails as stalled under the fix's stall_steps rule.
 template <int dim>
 void ServoRve<dim>::hold_until_at_rest(const Matrix& F, long steps, TimedTally& tally)
 {
+  ProgressWatch progress{fix_->stall_steps()};
+  progress.start(tally.dem_steps);
   do
   {
     if (tally.dem_steps + steps > budget_)
@@ -277,6 +280,21 @@ void ServoRve<dim>::hold_until_at_rest(const Matrix& F, long steps, TimedTally& 
     {
       last_converged_ = false;
       return;
+    }
+    const double distance = fix_->distance_from_rest();
+    if (!progress.progressing(distance, tally.dem_steps))
+    {
+      last_converged_ = false;
+      const Result& r = fix_->result();
+      throw RveSolveError(Fix::stalled,
+                          std::string(Fix::status_name(Fix::stalled)) +
+                            ": the RVE held at its F has not come closer to rest (the distance max(r_a/servo_tol, "
+                            "relaxation/tol) below 0.9 x its best, " +
+                            std::to_string(progress.best) + ") in " +
+                            std::to_string(tally.dem_steps - progress.best_at) + " DEM steps (stall_steps = " +
+                            std::to_string(progress.window) + "): now " + std::to_string(distance) +
+                            " (r_a = " + std::to_string(r.residual) + ", E_kin/E_pot = " +
+                            std::to_string(r.ekin_epot) + ")");
     }
   } while (!fix_->at_rest());
   last_converged_ = true;

@@ -103,6 +103,7 @@
 #include "fix.h"
 #include "membrane_2d.h"
 #include "membrane_3d.h"
+#include "progress_watch.h"
 #include "rve_homogenisation.h"
 #include "servo_controller.h"
 
@@ -231,6 +232,15 @@ public:
    * continuous solve drive).
    */
   bool at_rest() const;
+  /**
+   * How far the state the last check homogenised is from at_rest(): the
+   * larger of r_a / servo_tol and the relaxation measure / its tolerance
+   * (at most 1 when at rest; infinite before the first contact pass). The
+   * progress watchdog's measure, for drivers of timed solves as well.
+   */
+  double distance_from_rest() const;
+  /// Steps without progress after which a solve fails as stalled (keyword stall_steps; 0: off).
+  long stall_steps() const { return progress_.window; }
   /// Steps of the current frame move still to run (0: the frame is at rest).
   int frame_move_steps_left() const { return move_steps_ - move_done_; }
   /// Steps between checks: C++ drivers run chunks of this length.
@@ -276,6 +286,8 @@ private:
   /// Progress watchdog at a check with the frame at rest: false (and the
   /// solve failed as stalled) after stall_steps steps without progress.
   bool progressing(double residual, double ekin);
+  /// distance_from_rest() for a servo residual @p residual and inner kinetic energy @p ekin.
+  double distance_from_rest(double residual, double ekin) const;
   /// The relaxation criterion (relax ekin_epot | unbalanced) with contact statistics @p c.
   bool relaxed_with(const fe2dem::ContactStatistics<dim>& c, double ekin) const;
   double servo_residual() const;
@@ -352,7 +364,6 @@ private:
   bool servo_scale_contact_ = false; ///< servo_scale contact (else inertia, R14)
   int check_every_ = 50;
   long max_steps_ = 2000000;
-  long stall_steps_ = 1000000;
   bool keep_fluctuations_ = true;
   bool affine_inner_ = false; ///< inner_start affine
   double move_rate_ = 1e-3;
@@ -403,8 +414,7 @@ private:
   std::vector<int> physical_of_;  ///< dense index -> dense index of its physical particle
   int n_inner_ = 0;
   int checks_since_contact_pass_ = 0;
-  double progress_best_ = 0.0; ///< smallest distance from convergence of this solve (watchdog)
-  long progress_step_ = 0;     ///< DEM step of the solve at which progress_best_ was set
+  fe2dem::ProgressWatch progress_{1000000}; ///< the progress watchdog of the current solve (stall_steps)
   double dtv_ = 0.0, dtf_ = 0.0;
   bool restored_ = false; ///< state came from a restart file
 

@@ -120,7 +120,7 @@ void FixRveServo<dim>::parse_arguments(int narg, char** arg)
                      max_steps_ = static_cast<long>(number(kw, v[0], 1.0, false));
                    }}},
     {"stall_steps", {1, [&](const char* kw, char** v) {
-                       stall_steps_ = static_cast<long>(number(kw, v[0], 0.0, false));
+                       progress_.window = static_cast<long>(number(kw, v[0], 0.0, false));
                      }}},
     {"start", {1, [&](const char* kw, char** v) { keep_fluctuations_ = choice(kw, v[0], "keep", "reset"); }}},
     {"inner_start", {1, [&](const char* kw, char** v) { affine_inner_ = !choice(kw, v[0], "keep", "affine"); }}},

@@ -33,8 +33,7 @@ void FixRveServo<dim>::begin_solve(const Tensor* F)
   result_.membrane_steps = 0;
   result_.residual = std::numeric_limits<double>::infinity(); // not evaluated yet
   checks_since_contact_pass_ = 1 << 30; // first relaxed check of a solve: fresh contact pass
-  progress_best_ = std::numeric_limits<double>::infinity();
-  progress_step_ = 0;
+  progress_.start(0);
   solve_pending_ = false;
   schedule_frame_move(F_before);
   if (timed_steps_ > 0)
@@ -157,7 +156,7 @@ void FixRveServo<dim>::servo_check(double ekin)
     apply_servo_correction();
 }
 
-// The distance from convergence is the larger of the servo residual and the
+// The distance from rest is the larger of the servo residual and the
 // relaxation measure, each over its tolerance (1 at convergence), the latter
 // with the energies of the last contact pass. It falls while a solve works
 // (the servo corrections, the damping); a solve whose tolerances cannot be
@@ -167,33 +166,35 @@ void FixRveServo<dim>::servo_check(double ekin)
 template <int dim>
 bool FixRveServo<dim>::progressing(double residual, double ekin)
 {
-  if (stall_steps_ <= 0)
+  const double distance = distance_from_rest(residual, ekin);
+  if (progress_.progressing(distance, result_.dem_steps))
     return true;
+  std::ostringstream msg;
+  msg << "the distance from rest, max(r_a/servo_tol, relaxation/tol), has not fallen below 0.9 x its best ("
+      << progress_.best << " at DEM step " << progress_.best_at << " of this solve) in the "
+      << result_.dem_steps - progress_.best_at << " DEM steps since (stall_steps = " << progress_.window
+      << "): now " << distance << " (r_a = " << residual << ", servo_tol = " << servo_tol_
+      << ", relax tol = " << relax_tol_ << "); the tolerances may be below what this packing reaches";
+  fail(stalled, msg.str());
+  return false;
+}
+
+template <int dim>
+double FixRveServo<dim>::distance_from_rest(double residual, double ekin) const
+{
   const fe2dem::ContactStatistics<dim>& c = result_.contacts;
-  const double inf = std::numeric_limits<double>::infinity();
-  double relaxation = inf; // no contact pass yet
+  double relaxation = std::numeric_limits<double>::infinity(); // no contact pass yet
   if (criterion_unbalanced_ && c.mean_force_sq > 0.0)
     relaxation = std::sqrt(unbalanced_sq_sum_ / std::max(n_inner_, 1) / c.mean_force_sq) / relax_tol_;
   else if (!criterion_unbalanced_ && c.potential_energy > 0.0)
     relaxation = ekin / (relax_tol_ * c.potential_energy);
-  const double distance = std::max(residual / servo_tol_, relaxation);
-  const long step = result_.dem_steps;
-  if (distance < 0.9 * progress_best_)
-  {
-    progress_best_ = distance;
-    progress_step_ = step;
-    return true;
-  }
-  if (step - progress_step_ < stall_steps_)
-    return true;
-  std::ostringstream msg;
-  msg << "the distance from convergence, max(r_a/servo_tol, relaxation/tol), has not fallen below 0.9 x its "
-      << "best (" << progress_best_ << " at DEM step " << progress_step_ << " of this solve) in the "
-      << step - progress_step_ << " DEM steps since (stall_steps = " << stall_steps_ << "): now " << distance
-      << " (r_a = " << residual << ", servo_tol = " << servo_tol_ << ", relax tol = " << relax_tol_
-      << "); the tolerances may be below what this packing reaches";
-  fail(stalled, msg.str());
-  return false;
+  return std::max(residual / servo_tol_, relaxation);
+}
+
+template <int dim>
+double FixRveServo<dim>::distance_from_rest() const
+{
+  return distance_from_rest(result_.residual, result_.ekin_epot * result_.contacts.potential_energy);
 }
 
 template <int dim>

@@ -36,10 +36,10 @@ examples=(
 for e in "${examples[@]}"; do
   IFS='|' read -r name kind command title <<<"$e"
   echo "== $name: $command"
-  rm -rf "output/$name"
+  rm -rf "output/$name" "output/$name.log"
   start=$(date +%s)
-  $command > "$gallery/$name.log" 2>&1 || { echo "make-gallery: $name failed, see $gallery/$name.log"; exit 1; }
+  mkdir -p output
+  $command > "output/$name.log" 2>&1 || { echo "make-gallery: $name failed, see output/$name.log"; exit 1; }
   echo "   $(($(date +%s) - start)) s"
   /usr/bin/python3 "$root/scripts/plot_gallery.py" "$kind" "output/$name" "$gallery/$name.png" "$title"
-  rm -f "$gallery/$name.log"
 done

@@ -5,8 +5,8 @@ Debian's python3 with python3-matplotlib and python3-h5py.
 Usage: plot_gallery.py KIND OUTPUT_DIR OUT_PNG TITLE
 
 KIND says what is drawn from OUTPUT_DIR:
-  rve      rve.csv of fe2dem-rve: stress ratio against the axial strain, or
-           sigma12/-sigma22 against F12 when F12 moves; det F - 1 per row;
+  rve      rve.csv of fe2dem-rve: the normal stresses (and sigma12 when F12
+           moves) and det F - 1 along the path's rows;
   macro    summary.csv of an RVE run: mean stress ratio and J_rel against
            the axial strain;
   elastic  summary.csv without RVEs: top force and sigma22 against the
@@ -35,25 +35,18 @@ def column(rs, key):
 
 def rve_path(ax):
     rs = rows("rve.csv")
-    three = "F33" in rs[0]
-    s = {k: column(rs, k) for k in rs[0] if k.startswith(("sigma1", "sigma2", "sigma3", "F"))}
-    if max(abs(v) for v in s["F12"]) > 1e-9:  # simple shear
-        ax[0].plot(s["F12"], [-a / b for a, b in zip(s["sigma12"], s["sigma22"])], "o-", ms=3)
-        ax[0].set_xlabel("shear strain F12")
-        ax[0].set_ylabel("sigma12 / -sigma22")
-    else:
-        axial = "3" if three else "2"
-        lateral = ["1", "2"] if three else ["1"]
-        x = [1.0 - f for f in s["F" + axial + axial]]
-        lat = [sum(s["sigma" + c + c][i] for c in lateral) / len(lateral) for i in range(len(x))]
-        ax_s = s["sigma" + axial + axial]
-        p = [(a + len(lateral) * b) / (1 + len(lateral)) for a, b in zip(ax_s, lat)]
-        ax[0].plot(x, [(a - b) / q if q else 0.0 for a, b, q in zip(ax_s, lat, p)], "o-", ms=3)
-        ax[0].set_xlabel("axial strain")
-        ax[0].set_ylabel("(sigma_axial - sigma_lateral) / p")
+    n = 3 if "F33" in rs[0] else 2
+    row = range(len(rs))
+    for i in range(1, n + 1):
+        ax[0].plot(row, [-v / 1e3 for v in column(rs, "sigma%d%d" % (i, i))], "o-", ms=3,
+                   label="-sigma%d%d" % (i, i))
+    if max(abs(v) for v in column(rs, "F12")) > 1e-9:  # shear
+        ax[0].plot(row, [v / 1e3 for v in column(rs, "sigma12")], "o-", ms=3, label="sigma12")
+    ax[0].set_xlabel("path row")
+    ax[0].set_ylabel("stress [kPa, 3D] or [kN/m, 2D]")
+    ax[0].legend(fontsize=7)
     dets = []
     for r in rs:
-        n = 3 if three else 2
         F = [[float(r["F%d%d" % (i + 1, j + 1)]) for j in range(n)] for i in range(n)]
         if n == 2:
             dets.append(F[0][0] * F[1][1] - F[0][1] * F[1][0])
@@ -61,7 +54,7 @@ def rve_path(ax):
             dets.append(F[0][0] * (F[1][1] * F[2][2] - F[1][2] * F[2][1]) -
                         F[0][1] * (F[1][0] * F[2][2] - F[1][2] * F[2][0]) +
                         F[0][2] * (F[1][0] * F[2][1] - F[1][1] * F[2][0]))
-    ax[1].plot(range(len(dets)), [d - 1.0 for d in dets], "o-", ms=3)
+    ax[1].plot(row, [d - 1.0 for d in dets], "o-", ms=3)
     ax[1].set_xlabel("path row")
     ax[1].set_ylabel("volumetric strain det F - 1")
 

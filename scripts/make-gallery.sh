@@ -24,6 +24,7 @@ cd "$root"
 examples=(
   "biaxial_1x1|macro|${mpi[*]} $fe2dem dealii_app/examples/biaxial_1x1.prm|2D biaxial test, one element, 4 RVEs"
   "biaxial_2x4|macro|${mpi[*]} $fe2dem dealii_app/examples/biaxial_2x4.prm|2D biaxial test, 2 x 4 mesh, 32 RVEs (recommended scheme)"
+  "biaxial_gmsh|macro|${mpi[*]} $fe2dem dealii_app/examples/biaxial_gmsh.prm|2D biaxial test on an unstructured Gmsh mesh, 5 quads, 20 RVEs"
   "elastic_block|elastic|$fe2dem dealii_app/examples/elastic_block.prm|2D neo-Hookean block, 2 % compression"
   "elastic_block_3d|elastic|$fe2dem dealii_app/examples/elastic_block_3d.prm|3D neo-Hookean block, distorted mesh, triaxial"
   "triaxial_3d_rve|macro|$fe2dem dealii_app/examples/triaxial_3d_rve.prm|3D triaxial compression of one element with a small_3d RVE"

@@ -156,17 +156,19 @@ ChildRun run_template_in_child(const RveSetup& setup, const std::map<std::string
     // A damaged state can make LIGGGHTS loop: read its output as it comes,
     // and kill it at the limit.
     fcntl(out[0], F_SETFL, O_NONBLOCK);
+    bool at_end = false; // the child closed its output: poll() would return at once from then on
     const auto drain = [&] {
       char buffer[4096];
       ssize_t n;
       while ((n = read(out[0], buffer, sizeof buffer)) > 0)
         text.append(buffer, static_cast<std::size_t>(n));
+      at_end = at_end || n == 0;
     };
     const auto limit = std::chrono::steady_clock::now() + std::chrono::seconds(seconds);
     for (;;)
     {
       pollfd readable{out[0], POLLIN, 0};
-      poll(&readable, 1, 20);
+      poll(&readable, at_end ? 0 : 1, 20); // with no descriptor: a 20 ms wait
       drain();
       const pid_t done = waitpid(pid, &run.status, WNOHANG);
       if (done == pid)

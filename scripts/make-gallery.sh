@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs every example as shipped (each with the one command of the README's
 # examples table; outputs in output/NAME) and draws one picture of each into
-# docs/gallery/NAME.png, the pictures of docs/gallery.md. About 8 minutes on
+# docs/gallery/NAME.png, the pictures of docs/gallery.md. About 9 minutes on
 # 2 cores. Builds in build/ first unless BUILD names a build directory.
 # Usage: scripts/make-gallery.sh [BUILD]
 set -euo pipefail
@@ -28,6 +28,7 @@ examples=(
   "elastic_block|elastic|$fe2dem dealii_app/examples/elastic_block.prm|2D neo-Hookean block, 2 % compression"
   "elastic_block_3d|elastic|$fe2dem dealii_app/examples/elastic_block_3d.prm|3D neo-Hookean block, distorted mesh, triaxial"
   "triaxial_3d_rve|macro|$fe2dem dealii_app/examples/triaxial_3d_rve.prm|3D triaxial compression of one element with a small_3d RVE"
+  "simple_shear_3d_rve|shear|$fe2dem dealii_app/examples/simple_shear_3d_rve.prm|3D simple shear of one element with a small_3d RVE, boundary conditions from the file"
   "wave_column_3d_rve|wave|${mpi[*]} $fe2dem dealii_app/examples/wave_column_3d_rve.prm|3D wave column, 4 lsyf_1000 Hertz RVEs, explicit dynamics"
   "rve_isotropic_2d|rve|$rve rve_templates/examples/isotropic_2d.prm|one 2D RVE, isotropic compression"
   "rve_biaxial_2d|rve|$rve rve_templates/examples/biaxial_2d.prm|one 2D RVE, biaxial compression"

@@ -11,6 +11,8 @@ KIND says what is drawn from OUTPUT_DIR:
            the axial strain;
   elastic  summary.csv without RVEs: top force and sigma22 against the
            axial strain;
+  shear    a simple-shear run of one element: sigma12 and the mean stress p,
+           and sigma12 / p, against gamma = F12 of IP 0 (history.h5);
   wave     a dynamic run: the change of sigma22 of every element against
            time (history.h5), kinetic energy and external work (energy.csv)."""
 import csv
@@ -108,8 +110,28 @@ def macro_dynamic(ax):
     ax[1].legend(fontsize=7)
 
 
+def macro_shear(ax):
+    import h5py
+
+    with h5py.File(os.path.join(out, "history.h5")) as h:
+        sigma, F = h["sigma"][:, 0, :], h["F"][:, 0, :]
+        dim = int(h.attrs["dimension"])
+    gamma = list(F[:, 1])  # F12, row-major
+    tau = [s[1] / 1e3 for s in sigma]
+    p = [-sum(s[k * (dim + 1)] for k in range(dim)) / dim / 1e3 for s in sigma]
+    ax[0].plot(gamma, tau, "o-", ms=3, label="sigma12")
+    ax[0].plot(gamma, p, "o-", ms=3, label="p = -tr(sigma)/3")
+    ax[0].set_xlabel("shear strain gamma = F12")
+    ax[0].set_ylabel("stress [kPa]")
+    ax[0].legend(fontsize=7)
+    ax[1].plot(gamma, [t / q for t, q in zip(tau, p)], "o-", ms=3)
+    ax[1].set_xlabel("shear strain gamma = F12")
+    ax[1].set_ylabel("sigma12 / p")
+
+
 fig, ax = plt.subplots(1, 2, figsize=(10, 3.8))
-{"rve": rve_path, "macro": macro_rve, "elastic": macro_elastic, "wave": macro_dynamic}[kind](ax)
+{"rve": rve_path, "macro": macro_rve, "elastic": macro_elastic, "wave": macro_dynamic,
+ "shear": macro_shear}[kind](ax)
 for a in ax:
     a.grid(alpha=0.3)
 fig.suptitle(title)

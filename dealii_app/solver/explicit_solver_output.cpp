@@ -141,7 +141,7 @@ void ExplicitSolver<dim>::write_summary_row(const StepStatistics& st, unsigned i
   const double wall = MPI_Wtime() - t_start_;
   std::ostringstream row;
   row << std::setprecision(12) << step_ << ',' << stage_ << ','
-      << analysis_->time().value_or(step_ - 1 + load_fraction_) << ','
+      << load_time() << ','
       << axial << ',' << st.ratio_mean << ',' << st.ratio_min << ',' << st.ratio_max << ','
       << st.s11_mean << ',' << st.s22_mean << ',' << st.j_rel_mean << ',' << st.coordination_mean
       << ',' << st.anisotropy_mean << ',' << iterations << ',' << cost_in_step_.dem_steps << ',' << wall

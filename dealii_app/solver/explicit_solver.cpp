@@ -300,6 +300,7 @@ void ExplicitSolver<dim>::setup_system()
       ip_[point++].position = fe_values.quadrature_point(q);
   }
   load_case_ = make_load_case<dim>(dof_map_, hi_[1] - lo_[1], prm_);
+  measures_ = std::make_unique<SpecimenMeasures<dim>>(dof_map_, hi_[1] - lo_[1]);
 }
 
 // (M5): row-sum-free diagonal scaling of the consistent mass, integrated

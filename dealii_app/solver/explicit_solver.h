@@ -23,6 +23,7 @@
 #include "output/history_writer.h"
 #include "materials/ip_state.h"
 #include "loading/load_case.h"
+#include "loading/specimen_measures.h"
 #include "parameters/macro_parameters.h"
 #include "materials/material.h"
 #include "elements/one_point_elements.h"
@@ -67,7 +68,8 @@ private:
   struct ConvergedState
   {
     unsigned int stage = 1, step_in_stage = 0, step = 0;
-    typename LoadCase<dim>::Reference reference;
+    std::vector<double> load_case_state;                 ///< LoadCase::state()
+    typename SpecimenMeasures<dim>::Reference reference; ///< of the measures
     dealii::Vector<double> displacement;
     dealii::Vector<double> step_increment; ///< of the last load step (Predictor = extrapolate)
     std::vector<IpState<dim>> ip;
@@ -112,7 +114,8 @@ private:
   unsigned int solve_load_step();
 
   void inject_fault_if_due(bool first_attempt);
-  void finish_isotropic_stage();
+  /// The end of stage_: the load case's own record and, before the loading stage, its reference state.
+  void finish_stage();
   /// Evaluates the loading at every load step's end (a boundary function giving NaN is named
   /// before any RVE is built). @throws std::runtime_error naming the condition.
   void check_loading_is_finite() const;
@@ -127,7 +130,7 @@ private:
   {
     double ratio_mean = 0.0, ratio_min = 0.0, ratio_max = 0.0; ///< stress_ratio()
     double s11_mean = 0.0, s22_mean = 0.0, s33_mean = 0.0;     ///< Cauchy stress (s33: 3D)
-    double j_rel_mean = 0.0;                                   ///< (J-J_ic)/J_ic
+    double j_rel_mean = 0.0;                                   ///< (J - J_loading_start) / J_loading_start
     double coordination_mean = 0.0, anisotropy_mean = 0.0;
     /// Per cell, the average over its quadrature points (VTU cell data; s33 in 3D).
     dealii::Vector<double> s11, s22, s33, ratio, j_rel, coordination, anisotropy, eq_strain;
@@ -171,7 +174,7 @@ private:
   /// solution-NNNN.vtu of load step @p step (also rebuilt on --resume).
   static std::string vtu_name(unsigned int step);
 
-  /// Where the loading is: stage 1 (isotropic) or 2 (axial), step in stage.
+  /// Where the loading is: stage (1 ... LoadCase::n_stages()), step in stage, step in the run.
   unsigned int stage_ = 1, step_in_stage_ = 0, step_ = 0;
   /// Load factor of the current stage in [0, 1] at the end of the current (sub)step.
   double load_fraction_ = 0.0;
@@ -188,6 +191,7 @@ private:
   dealii::FEValues<dim> fe_values_f_int_; ///< gradients and JxW: f_int
   DofMap<dim> dof_map_;
   std::unique_ptr<LoadCase<dim>> load_case_;
+  std::unique_ptr<SpecimenMeasures<dim>> measures_;
   std::unique_ptr<Material<dim>> material_;
   std::unique_ptr<OnePointElements<dim>> one_point_; ///< 'Quadrature' = one point only
   std::unique_ptr<Analysis<dim>> analysis_;

@@ -139,8 +139,8 @@ int ExplicitSolver<dim>::stop_signal_received() const
 template <int dim>
 void ExplicitSolver<dim>::save_converged_state()
 {
-  converged_ = {stage_, step_in_stage_, step_, load_case_->reference(), fields_.displacement, step_increment_,
-                ip_,    analysis_->pack_state(), energy_.pack()};
+  converged_ = {stage_, step_in_stage_, step_, load_case_->state(), measures_->reference(), fields_.displacement,
+                step_increment_, ip_, analysis_->pack_state(), energy_.pack()};
 }
 
 template <int dim>
@@ -158,8 +158,9 @@ std::string ExplicitSolver<dim>::write_checkpoint()
       d.step = static_cast<int>(converged_.step);
       d.stage = static_cast<int>(converged_.stage);
       d.step_in_stage = static_cast<int>(converged_.step_in_stage);
-      d.u_top_ic = converged_.reference.u_top_ic;
-      d.h_ic = converged_.reference.h_ic;
+      d.load_case_state = converged_.load_case_state;
+      d.loading_start_u_top = converged_.reference.u_top;
+      d.loading_start_height = converged_.reference.height;
       d.wall_seconds = MPI_Wtime() - t_start_;
       d.displacement.assign(converged_.displacement.begin(), converged_.displacement.end());
       d.step_increment.assign(converged_.step_increment.begin(), converged_.step_increment.end());
@@ -229,6 +230,11 @@ std::string ExplicitSolver<dim>::resume_from_checkpoint()
     throw std::runtime_error("--resume: checkpoint '" + file + "' holds " +
                              std::to_string(d.displacement.size()) + " degrees of freedom, the mesh has " +
                              std::to_string(fields_.displacement.size()) + " (was the mesh file changed?)");
+  if (d.stage < 1 || static_cast<unsigned int>(d.stage) > load_case_->n_stages() ||
+      d.step_in_stage < 0 || static_cast<unsigned int>(d.step_in_stage) > load_case_->steps_in_stage(d.stage))
+    throw std::runtime_error("--resume: checkpoint '" + file + "' ends in step " + std::to_string(d.step_in_stage) +
+                             " of stage " + std::to_string(d.stage) + ", which the load case (" +
+                             std::to_string(load_case_->n_stages()) + " stage(s)) does not have");
   stage_ = d.stage;
   step_in_stage_ = d.step_in_stage;
   step_ = d.step;
@@ -238,7 +244,15 @@ std::string ExplicitSolver<dim>::resume_from_checkpoint()
                              " quadrature points of " + std::to_string(d.ip_state_width) +
                              " values, the mesh has " + std::to_string(ip_.size()) + " of " +
                              std::to_string(IpState<dim>::packed_size()));
-  load_case_->set_reference({d.u_top_ic, d.h_ic});
+  try
+  {
+    load_case_->set_state(d.load_case_state);
+  }
+  catch (const std::exception& e)
+  {
+    throw std::runtime_error("--resume: checkpoint '" + file + "': " + e.what());
+  }
+  measures_->set_reference({d.loading_start_u_top, d.loading_start_height});
   std::copy(d.displacement.begin(), d.displacement.end(), fields_.displacement.begin());
   std::copy(d.step_increment.begin(), d.step_increment.end(), step_increment_.begin());
   for (std::size_t p = 0; p < ip_.size(); ++p)

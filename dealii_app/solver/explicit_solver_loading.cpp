@@ -29,7 +29,7 @@ void ExplicitSolver<dim>::run()
     slow_loading_step_time(prm_, largest_step_strain());
   assemble_lumped_mass();
   prepare_output_directory();
-  stage_ = load_case_->steps_in_stage(1) > 0 ? 1 : 2;
+  stage_ = load_case_->first_stage();
   const std::string checkpoint = resume_ ? resume_from_checkpoint() : "";
   // Before the RVEs: its refusals (a macro step shorter than one RVE check) are cheap.
   analysis_ = make_analysis<dim>(*this, prm_, highest_frequency(), relaxation_frequency(), pcout_);
@@ -49,7 +49,7 @@ void ExplicitSolver<dim>::run()
   save_converged_state();
   try
   {
-    for (; stage_ <= 2; ++stage_, step_in_stage_ = 0)
+    for (; stage_ <= load_case_->n_stages(); ++stage_, step_in_stage_ = 0)
     {
       while (step_in_stage_ < load_case_->steps_in_stage(stage_))
       {
@@ -70,8 +70,8 @@ void ExplicitSolver<dim>::run()
         if (prm_.checkpoint.every > 0 && step_ % prm_.checkpoint.every == 0)
           write_checkpoint();
       }
-      if (stage_ == 1)
-        finish_isotropic_stage();
+      if (stage_ < load_case_->n_stages())
+        finish_stage();
     }
   }
   catch (const StopSignal& s)
@@ -166,16 +166,19 @@ void ExplicitSolver<dim>::inject_fault_if_due(bool first_attempt)
 template <int dim>
 unsigned int ExplicitSolver<dim>::total_steps() const
 {
-  return load_case_->steps_in_stage(1) + load_case_->steps_in_stage(2);
+  return load_case_->total_steps();
 }
 
-// End of stage 1: the height and J against which stage 2 is measured.
+// Before the loading stage (the last) begins, the height and J its measures start from.
 template <int dim>
-void ExplicitSolver<dim>::finish_isotropic_stage()
+void ExplicitSolver<dim>::finish_stage()
 {
-  load_case_->finish_stage_1(fields_.displacement);
+  load_case_->finish_stage(stage_, fields_.displacement);
+  if (stage_ + 1 != load_case_->n_stages())
+    return;
+  measures_->start_loading_stage(fields_.displacement);
   for (IpState<dim>& p : ip_)
-    p.J_ic = determinant(p.F);
+    p.J_loading_start = determinant(p.F);
 }
 
 // A signal before the initial state is complete may have ended RVE solves
@@ -196,7 +199,7 @@ template <int dim>
 void ExplicitSolver<dim>::check_loading_is_finite() const
 {
   Vector<double> u(dof_handler_.n_dofs()), f(dof_handler_.n_dofs());
-  for (unsigned int stage = 1; stage <= 2; ++stage)
+  for (unsigned int stage = 1; stage <= load_case_->n_stages(); ++stage)
   {
     const unsigned int n = load_case_->steps_in_stage(stage);
     for (unsigned int k = 0; n > 0 && k <= n; ++k)
@@ -246,9 +249,7 @@ double ExplicitSolver<dim>::load_time() const
 {
   if (const auto t = analysis_->time())
     return *t;
-  if (prm_.loading.boundary == Loading::Boundary::conditions)
-    return load_fraction_ * prm_.loading.end_time;
-  return (stage_ == 1 ? 0.0 : load_case_->steps_in_stage(1) > 0 ? 1.0 : 0.0) + load_fraction_;
+  return load_case_->pseudo_time(stage_, load_fraction_);
 }
 
 // The reaction of a constrained dof: f_int + M a there (quasi-static: a = 0).

@@ -23,7 +23,7 @@ template <int dim>
 void ExplicitSolver<dim>::output_step(unsigned int iterations)
 {
   const StepStatistics stats = gather_step_statistics();
-  const double axial = load_case_->axial_strain(stage_, fields_.displacement);
+  const double axial = measures_->axial_strain(stage_ == load_case_->n_stages(), fields_.displacement);
   write_particle_dumps();
   // Load balance: RVE seconds of the busiest and of the mean rank (collective).
   const Utilities::MPI::MinMaxAvg rve_seconds =
@@ -86,7 +86,7 @@ typename ExplicitSolver<dim>::StepStatistics ExplicitSolver<dim>::gather_step_st
     const double J = determinant(F);
     const Tensor<2, dim> sigma = h.P * transpose(F) / J;
     const double r = stress_ratio(sigma);
-    const double jr = (J - h.J_ic) / h.J_ic;
+    const double jr = (J - h.J_loading_start) / h.J_loading_start;
     r_min = std::min(r_min, r);
     r_max = std::max(r_max, r);
     r_sum += r;
@@ -145,7 +145,7 @@ void ExplicitSolver<dim>::write_summary_row(const StepStatistics& st, unsigned i
       << axial << ',' << st.ratio_mean << ',' << st.ratio_min << ',' << st.ratio_max << ','
       << st.s11_mean << ',' << st.s22_mean << ',' << st.j_rel_mean << ',' << st.coordination_mean
       << ',' << st.anisotropy_mean << ',' << iterations << ',' << cost_in_step_.dem_steps << ',' << wall
-      << ',' << load_case_->top_reaction(fields_.f_int) << ','
+      << ',' << measures_->top_reaction(fields_.f_int) << ','
       << load_case_->affine_deviation(load_fraction_, fields_.displacement) << ',' << cost_in_step_.solves
       << ',' << rve_seconds.max << ',' << rve_seconds.avg;
   if (dim == 3) // new columns go at the end (architecture.md)

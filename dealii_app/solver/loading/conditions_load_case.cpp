@@ -12,9 +12,9 @@ namespace fe2dem::macro
 using namespace dealii;
 
 template <int dim>
-ConditionsLoadCase<dim>::ConditionsLoadCase(const DofMap<dim>& dofs, double h0, const Loading& loading,
+ConditionsLoadCase<dim>::ConditionsLoadCase(const DofMap<dim>& dofs, const Loading& loading,
                                             const std::vector<BoundaryCondition>& conditions)
-  : LoadCase<dim>(dofs, h0), steps_(loading.steps), end_time_(loading.end_time)
+  : LoadCase<dim>(dofs), steps_(loading.steps), end_time_(loading.end_time)
 {
   for (std::size_t n = 0; n < conditions.size(); ++n)
   {

@@ -30,9 +30,12 @@ class ConditionsLoadCase : public LoadCase<dim>
 {
 public:
   /// @throws std::runtime_error naming the subsection if a condition's boundary has no node.
-  ConditionsLoadCase(const DofMap<dim>& dofs, double h0, const Loading& loading,
+  ConditionsLoadCase(const DofMap<dim>& dofs, const Loading& loading,
                      const std::vector<BoundaryCondition>& conditions);
-  unsigned int steps_in_stage(unsigned int stage) const override { return stage == 1 ? 0 : steps_; }
+  unsigned int n_stages() const override { return 1; }
+  unsigned int steps_in_stage(unsigned int) const override { return steps_; }
+  /// The functions' t: @p fraction x 'End time'.
+  double pseudo_time(unsigned int, double fraction) const override { return fraction * end_time_; }
   typename LoadCase<dim>::Constraints constraints(unsigned int stage, double fraction) const override;
   void external_force(unsigned int stage, double fraction, const dealii::DoFHandler<dim>& dofs,
                       const dealii::Vector<double>& u, dealii::Vector<double>& f) const override;

@@ -41,19 +41,56 @@ void DofMap<dim>::reinit(const DoFHandler<dim>& dof_handler)
 }
 
 template <int dim>
-void LoadCase<dim>::finish_stage_1(const Vector<double>& u)
+double DofMap<dim>::mean_top_displacement(const Vector<double>& u) const
 {
-  u_top_ic_ = mean_top_displacement(u);
-  h_ic_ = h0_ + u_top_ic_;
+  double sum = 0.0;
+  int n = 0;
+  for (types::global_dof_index i = 0; i < position.size(); ++i)
+    if (on(i, top) && component[i] == 1)
+    {
+      sum += u[i];
+      ++n;
+    }
+  return sum / n;
 }
 
 template <int dim>
-double LoadCase<dim>::axial_strain(unsigned int stage, const Vector<double>& u) const
+double LoadCase<dim>::pseudo_time(const unsigned int stage, const double fraction) const
 {
-  return stage == 2 ? (u_top_ic_ - mean_top_displacement(u)) / h_ic_ : 0.0;
+  double before = 0.0;
+  for (unsigned int s = 1; s < stage; ++s)
+    before += steps_in_stage(s) > 0 ? 1.0 : 0.0;
+  return before + fraction;
 }
 
-// Over the steps of stage 2 (h_ic = h0 before stage 1 ends: a nominal measure).
+template <int dim>
+void LoadCase<dim>::set_state(const std::vector<double>& s)
+{
+  if (!s.empty())
+    throw std::runtime_error("the checkpoint holds " + std::to_string(s.size()) +
+                             " values of a load case's state, this load case has none");
+}
+
+template <int dim>
+unsigned int LoadCase<dim>::first_stage() const
+{
+  unsigned int s = 1;
+  while (s < n_stages() && steps_in_stage(s) == 0)
+    ++s;
+  return s;
+}
+
+template <int dim>
+unsigned int LoadCase<dim>::total_steps() const
+{
+  unsigned int n = 0;
+  for (unsigned int s = 1; s <= n_stages(); ++s)
+    n += steps_in_stage(s);
+  return n;
+}
+
+// Over the steps of the loading stage, before the stages that prepare it
+// have run (the presets' stage 2 then moves the top over h0: a nominal measure).
 template <int dim>
 double LoadCase<dim>::largest_step_strain() const
 {
@@ -63,12 +100,12 @@ double LoadCase<dim>::largest_step_strain() const
   for (const Point<dim>& x : dofs_.position)
     for (unsigned int d = 0; d < dim; ++d)
       lo[d] = std::min(lo[d], x[d]), hi[d] = std::max(hi[d], x[d]);
-  const unsigned int n = steps_in_stage(2);
+  const unsigned int stage = n_stages(), n = steps_in_stage(stage);
   double largest = 0.0;
-  Constraints before = constraints(2, 0.0);
+  Constraints before = constraints(stage, 0.0);
   for (unsigned int k = 1; k <= n; ++k)
   {
-    const Constraints after = constraints(2, static_cast<double>(k) / n);
+    const Constraints after = constraints(stage, static_cast<double>(k) / n);
     for (const auto& [i, u] : after)
     {
       const auto b = before.find(i);
@@ -81,33 +118,9 @@ double LoadCase<dim>::largest_step_strain() const
 }
 
 template <int dim>
-double LoadCase<dim>::mean_top_displacement(const Vector<double>& u) const
-{
-  double sum = 0.0;
-  int n = 0;
-  for (types::global_dof_index i = 0; i < dofs_.position.size(); ++i)
-    if (dofs_.on(i, top) && dofs_.component[i] == 1)
-    {
-      sum += u[i];
-      ++n;
-    }
-  return sum / n;
-}
-
-template <int dim>
-double LoadCase<dim>::top_reaction(const Vector<double>& f_int) const
-{
-  double force = 0.0;
-  for (types::global_dof_index i = 0; i < dofs_.position.size(); ++i)
-    if (dofs_.on(i, top) && dofs_.component[i] == 1)
-      force += f_int[i];
-  return force;
-}
-
-template <int dim>
 CompressionLoadCase<dim>::CompressionLoadCase(const DofMap<dim>& dofs, double h0, const Loading& loading,
                                               const std::string& mesh_file)
-  : LoadCase<dim>(dofs, h0), loading_(loading)
+  : LoadCase<dim>(dofs), loading_(loading), h0_(h0), h_ic_(h0)
 {
   constexpr unsigned int n_faces = 2 * dim;
   unsigned int n[n_faces] = {};
@@ -143,6 +156,25 @@ unsigned int CompressionLoadCase<dim>::steps_in_stage(unsigned int stage) const
 }
 
 template <int dim>
+void CompressionLoadCase<dim>::finish_stage(const unsigned int stage, const Vector<double>& u)
+{
+  if (stage != 1)
+    return;
+  u_top_ic_ = this->dofs_.mean_top_displacement(u);
+  h_ic_ = h0_ + u_top_ic_;
+}
+
+template <int dim>
+void CompressionLoadCase<dim>::set_state(const std::vector<double>& s)
+{
+  if (s.size() != 2)
+    throw std::runtime_error("the checkpoint holds " + std::to_string(s.size()) +
+                             " values of the load case's state, the compression test has 2 "
+                             "(top displacement and height after stage 1)");
+  u_top_ic_ = s[0], h_ic_ = s[1];
+}
+
+template <int dim>
 typename LoadCase<dim>::Constraints CompressionLoadCase<dim>::constraints(unsigned int stage,
                                                                           double fraction) const
 {
@@ -161,7 +193,7 @@ typename LoadCase<dim>::Constraints CompressionLoadCase<dim>::constraints(unsign
     else if (d.on(i, bottom) && d.on(i, back) && ((d.on(i, left) && c != 1) || (d.on(i, right) && c == 2)))
       values[i] = 0.0;
     if (stage == 2 && d.on(i, top) && c == 1) // displacement control from the height h_ic
-      values[i] = this->u_top_ic_ - fraction * loading_.axial_strain * this->h_ic_;
+      values[i] = u_top_ic_ - fraction * loading_.axial_strain * h_ic_;
   }
   return values;
 }
@@ -233,8 +265,8 @@ void CompressionLoadCase<dim>::external_force(unsigned int stage, double fractio
 }
 
 template <int dim>
-AffineLoadCase<dim>::AffineLoadCase(const DofMap<dim>& dofs, double h0, const Loading& loading)
-  : LoadCase<dim>(dofs, h0), steps_(loading.steps)
+AffineLoadCase<dim>::AffineLoadCase(const DofMap<dim>& dofs, const Loading& loading)
+  : LoadCase<dim>(dofs), steps_(loading.steps)
 {
   for (unsigned int i = 0; i < dim; ++i)
     for (unsigned int j = 0; j < dim; ++j)
@@ -284,10 +316,10 @@ template <int dim>
 std::unique_ptr<LoadCase<dim>> make_load_case(const DofMap<dim>& dofs, double h0, const Parameters& prm)
 {
   if (prm.loading.boundary == Loading::Boundary::conditions)
-    return std::make_unique<ConditionsLoadCase<dim>>(dofs, h0, prm.loading, prm.conditions);
+    return std::make_unique<ConditionsLoadCase<dim>>(dofs, prm.loading, prm.conditions);
   if (prm.loading.boundary != Loading::Boundary::affine)
     return std::make_unique<CompressionLoadCase<dim>>(dofs, h0, prm.loading, prm.geometry.mesh_file);
-  return std::make_unique<AffineLoadCase<dim>>(dofs, h0, prm.loading);
+  return std::make_unique<AffineLoadCase<dim>>(dofs, prm.loading);
 }
 
 template struct DofMap<2>;

@@ -8,9 +8,12 @@
  * colorize numbers them; 2 dim for any other boundary face). y is the
  * vertical axis in both dimensions.
  *
- * A run has two stages: stage 1 (e.g. isotropic compression; 0 steps if
- * the case has none) and stage 2; each load step ends at a load fraction
- * of its stage (dyadic, so sub-steps sum exactly).
+ * A load case runs in stages numbered 1 ... n_stages(), each of some load
+ * steps (a stage may have none); each load step ends at a load fraction of
+ * its stage (dyadic, so sub-steps sum exactly). The last stage loads the
+ * specimen; the stages before it prepare it (the presets' isotropic
+ * compression). What is reported of the specimen as a whole is measured
+ * over the loading stage (specimen_measures.h).
  */
 #pragma once
 
@@ -64,6 +67,8 @@ struct DofMap
   bool on(dealii::types::global_dof_index i, BoxFace b) const { return faces[i] >> b & 1u; }
   /// Builds it from @p dofs; boundary faces must carry BoxFace ids.
   void reinit(const dealii::DoFHandler<dim>& dofs);
+  /// Mean vertical (y) displacement in @p u of the nodes on the top face.
+  double mean_top_displacement(const dealii::Vector<double>& u) const;
 };
 
 template <int dim>
@@ -71,10 +76,12 @@ class LoadCase
 {
 public:
   using Constraints = std::map<dealii::types::global_dof_index, double>;
-  /// @param h0 reference height of the specimen (the axial strain is measured on it).
-  LoadCase(const DofMap<dim>& dofs, double h0) : dofs_(dofs), h0_(h0), h_ic_(h0) {}
+  explicit LoadCase(const DofMap<dim>& dofs) : dofs_(dofs) {}
   virtual ~LoadCase() = default;
 
+  /// Number of stages (at least 1); the last one is the loading stage.
+  virtual unsigned int n_stages() const = 0;
+  /// Load steps of @p stage (1 ... n_stages()); may be 0.
   virtual unsigned int steps_in_stage(unsigned int stage) const = 0;
   /// Prescribed displacement of every constrained dof at @p fraction of @p stage.
   virtual Constraints constraints(unsigned int stage, double fraction) const = 0;
@@ -83,35 +90,34 @@ public:
                               const dealii::Vector<double>& u, dealii::Vector<double>& f) const = 0;
   /// Largest deviation of @p u from the case's affine field over the largest affine displacement (0: none).
   virtual double affine_deviation(double /*fraction*/, const dealii::Vector<double>& /*u*/) const { return 0.0; }
-
-  /// End of stage 1: the top displacement and height that stage 2 is measured from.
-  void finish_stage_1(const dealii::Vector<double>& u);
-  /// Compressive axial strain of the top edge in stage 2 (0 in stage 1).
-  double axial_strain(unsigned int stage, const dealii::Vector<double>& u) const;
-  /// Vertical internal force summed over the top edge.
-  double top_reaction(const dealii::Vector<double>& f_int) const;
   /**
-   * The nominal strain of the fastest load step of stage 2: the largest
-   * change of a prescribed displacement over one step, over the specimen's
-   * extent along its component (the pace of 'Quasi-static scheme' = slow
-   * loading). 0 if stage 2 prescribes no motion (e.g. loads by pressure only).
+   * The pseudo-time of a quasi-static run at @p fraction of @p stage (what
+   * summary.csv and energy.csv report): by default the number of earlier
+   * stages that have steps, plus @p fraction.
+   */
+  virtual double pseudo_time(unsigned int stage, double fraction) const;
+  /// Called when @p stage has ended with displacement @p u (before the next stage begins).
+  virtual void finish_stage(unsigned int /*stage*/, const dealii::Vector<double>& /*u*/) {}
+  /// What a checkpoint keeps of the case's own state (what finish_stage() recorded).
+  virtual std::vector<double> state() const { return {}; }
+  /// Restores state(). @throws std::runtime_error if @p s does not fit the case.
+  virtual void set_state(const std::vector<double>& s);
+
+  /// The first stage that has steps (the last stage if none has).
+  unsigned int first_stage() const;
+  /// Load steps of all stages.
+  unsigned int total_steps() const;
+  /**
+   * The nominal strain of the fastest load step of the loading stage: the
+   * largest change of a prescribed displacement over one step, over the
+   * specimen's extent along its component (the pace of 'Quasi-static
+   * scheme' = slow loading). 0 if the stage prescribes no motion (e.g.
+   * loads by pressure only).
    */
   double largest_step_strain() const;
 
-  /// What a checkpoint keeps: top displacement and height after stage 1.
-  struct Reference
-  {
-    double u_top_ic = 0.0, h_ic = 0.0;
-  };
-  Reference reference() const { return {u_top_ic_, h_ic_}; }
-  void set_reference(const Reference& r) { u_top_ic_ = r.u_top_ic, h_ic_ = r.h_ic; }
-
 protected:
-  /// Mean vertical displacement of the top edge's nodes.
-  double mean_top_displacement(const dealii::Vector<double>& u) const;
   const DofMap<dim>& dofs_;
-  double h0_;
-  double u_top_ic_ = 0.0, h_ic_ = 0.0;
 };
 
 /**
@@ -123,21 +129,33 @@ protected:
  * diagonal F satisfies them). Stage 1 ramps a follower pressure on the
  * sides (x faces, and z faces in 3D) and the top; stage 2 keeps it on the
  * sides and moves the top down to the axial strain of the height after
- * stage 1.
+ * stage 1 (recorded by finish_stage(1), kept by state()).
  */
 template <int dim>
 class CompressionLoadCase : public LoadCase<dim>
 {
 public:
-  /// @throws std::runtime_error if a face of the bounding box has too few nodes.
+  /**
+   * @param h0 reference height of the specimen.
+   * @throws std::runtime_error if a face of the bounding box has too few nodes.
+   */
   CompressionLoadCase(const DofMap<dim>& dofs, double h0, const Loading& loading, const std::string& mesh_file);
+  unsigned int n_stages() const override { return 2; }
   unsigned int steps_in_stage(unsigned int stage) const override;
   typename LoadCase<dim>::Constraints constraints(unsigned int stage, double fraction) const override;
   void external_force(unsigned int stage, double fraction, const dealii::DoFHandler<dim>& dofs,
                       const dealii::Vector<double>& u, dealii::Vector<double>& f) const override;
+  /// The end of stage 1: the top displacement and height stage 2 moves the top from.
+  void finish_stage(unsigned int stage, const dealii::Vector<double>& u) override;
+  /// {u_top_ic, h_ic}
+  std::vector<double> state() const override { return {u_top_ic_, h_ic_}; }
+  void set_state(const std::vector<double>& s) override;
 
 private:
   const Loading& loading_;
+  const double h0_;
+  double u_top_ic_ = 0.0; ///< mean top displacement after stage 1
+  double h_ic_;           ///< height after stage 1 (h0 before)
 };
 
 /// Patch test: every node of the bounding box's edges at (F - I) X, F ramped from I.
@@ -145,8 +163,9 @@ template <int dim>
 class AffineLoadCase : public LoadCase<dim>
 {
 public:
-  AffineLoadCase(const DofMap<dim>& dofs, double h0, const Loading& loading);
-  unsigned int steps_in_stage(unsigned int stage) const override { return stage == 1 ? 0 : steps_; }
+  AffineLoadCase(const DofMap<dim>& dofs, const Loading& loading);
+  unsigned int n_stages() const override { return 1; }
+  unsigned int steps_in_stage(unsigned int) const override { return steps_; }
   typename LoadCase<dim>::Constraints constraints(unsigned int stage, double fraction) const override;
   void external_force(unsigned int, double, const dealii::DoFHandler<dim>&, const dealii::Vector<double>&,
                       dealii::Vector<double>& f) const override
@@ -162,7 +181,7 @@ private:
   unsigned int steps_;
 };
 
-/// The load case of subsection Loading.
+/// The load case of subsection Loading; @p h0 is the specimen's reference height.
 template <int dim>
 std::unique_ptr<LoadCase<dim>> make_load_case(const DofMap<dim>& dofs, double h0, const Parameters& prm);
 } // namespace fe2dem::macro

@@ -23,7 +23,7 @@ struct IpState
   dealii::Tensor<2, dim> F;                                            ///< at the last f_int
   dealii::Tensor<2, dim> P;                                            ///< first Piola-Kirchhoff
   dealii::Tensor<2, dim> F_last_step = dealii::unit_symmetric_tensor<dim>(); ///< at the last converged step
-  double J_ic = 1.0;                                                   ///< det F after the isotropic stage
+  double J_loading_start = 1.0; ///< det F when the load case's loading stage (its last) began
   /// Corotational formulation (corotational_material.h): the deformation the material sees, F^R,
   /// and the macro F, at the last commit (a converged load step; in dynamics every time step) ...
   dealii::Tensor<2, dim> F_corotational = dealii::unit_symmetric_tensor<dim>();
@@ -46,7 +46,7 @@ struct IpState
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           *out++ = (*t)[i][j];
-    *out++ = J_ic;
+    *out++ = J_loading_start;
     return statistics.pack(out);
   }
   const double* unpack(const double* in)
@@ -55,7 +55,7 @@ struct IpState
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           (*t)[i][j] = *in++;
-    J_ic = *in++;
+    J_loading_start = *in++;
     return statistics.unpack(in);
   }
 };

@@ -30,8 +30,11 @@ namespace
 //    the checkpoint's rows first, so they must have the columns of this one);
 // 5: /step_increment, the start of the next step with 'Predictor = extrapolate';
 // 6: the IP state with the statistics fe2dem-rve reports (contacts, sliding
-//    contacts, max_overlap, fabric_deviator, membrane_steps, F_check_error).
-constexpr int format_version = 6;
+//    contacts, max_overlap, fabric_deviator, membrane_steps, F_check_error);
+// 7: stages numbered by the load case (a one-stage case's stage is 1, was
+//    2), /load_case_state, and the measures' reference
+//    loading_start_u_top/height (were u_top_ic, h_ic).
+constexpr int format_version = 7;
 
 void check(herr_t status, const std::string& what, const std::string& file)
 {
@@ -171,9 +174,10 @@ void write_checkpoint(const std::string& file, const CheckpointData& d,
     write_attribute(h, "step", H5T_NATIVE_INT, d.step, tmp);
     write_attribute(h, "stage", H5T_NATIVE_INT, d.stage, tmp);
     write_attribute(h, "step_in_stage", H5T_NATIVE_INT, d.step_in_stage, tmp);
-    write_attribute(h, "u_top_ic", H5T_NATIVE_DOUBLE, d.u_top_ic, tmp);
-    write_attribute(h, "h_ic", H5T_NATIVE_DOUBLE, d.h_ic, tmp);
+    write_attribute(h, "loading_start_u_top", H5T_NATIVE_DOUBLE, d.loading_start_u_top, tmp);
+    write_attribute(h, "loading_start_height", H5T_NATIVE_DOUBLE, d.loading_start_height, tmp);
     write_attribute(h, "wall_seconds", H5T_NATIVE_DOUBLE, d.wall_seconds, tmp);
+    write_bytes(h, "load_case_state", H5T_NATIVE_DOUBLE, d.load_case_state.data(), {d.load_case_state.size()}, tmp);
     write_bytes(h, "displacement", H5T_NATIVE_DOUBLE, d.displacement.data(), {d.displacement.size()}, tmp);
     write_bytes(h, "step_increment", H5T_NATIVE_DOUBLE, d.step_increment.data(), {d.step_increment.size()}, tmp);
     const hsize_t n_ip = d.ip_state_width ? d.ip_state.size() / d.ip_state_width : 0;
@@ -254,8 +258,9 @@ CheckpointData read_checkpoint(const std::string& file)
     d.step = read_attribute<int>(h, "step", H5T_NATIVE_INT, file);
     d.stage = read_attribute<int>(h, "stage", H5T_NATIVE_INT, file);
     d.step_in_stage = read_attribute<int>(h, "step_in_stage", H5T_NATIVE_INT, file);
-    d.u_top_ic = read_attribute<double>(h, "u_top_ic", H5T_NATIVE_DOUBLE, file);
-    d.h_ic = read_attribute<double>(h, "h_ic", H5T_NATIVE_DOUBLE, file);
+    d.loading_start_u_top = read_attribute<double>(h, "loading_start_u_top", H5T_NATIVE_DOUBLE, file);
+    d.loading_start_height = read_attribute<double>(h, "loading_start_height", H5T_NATIVE_DOUBLE, file);
+    d.load_case_state = read_vector<double>(h, "load_case_state", H5T_NATIVE_DOUBLE, file);
     d.wall_seconds = read_attribute<double>(h, "wall_seconds", H5T_NATIVE_DOUBLE, file);
     d.displacement = read_vector<double>(h, "displacement", H5T_NATIVE_DOUBLE, file);
     d.step_increment = read_vector<double>(h, "step_increment", H5T_NATIVE_DOUBLE, file);

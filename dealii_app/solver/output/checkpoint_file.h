@@ -5,8 +5,10 @@
  * step), written under a temporary name and renamed only when complete, so
  * a file with the final name is always whole.
  *
- * Layout: attributes format, step, stage, step_in_stage, u_top_ic, h_ic,
- * wall_seconds; datasets /displacement and /step_increment (the last load
+ * Layout: attributes format, step, stage, step_in_stage,
+ * loading_start_u_top, loading_start_height (SpecimenMeasures::Reference),
+ * wall_seconds; datasets /load_case_state (LoadCase::state(), may be
+ * empty), /displacement and /step_increment (the last load
  * step's change, for 'Predictor = extrapolate') [n_dofs], /ip_state [n_ip][n],
  * /summary_rows, /energy_rows and /parameters (strings), /energy_state
  * (EnergyBalance::pack()), /dynamics_state (t, v, a, f_int; empty when
@@ -28,7 +30,9 @@ class HistoryWriter;
 struct CheckpointData
 {
   int step = 0, stage = 1, step_in_stage = 0; ///< last converged load step
-  double u_top_ic = 0.0, h_ic = 0.0;          ///< biaxial reference after stage 1
+  std::vector<double> load_case_state;        ///< LoadCase::state()
+  double loading_start_u_top = 0.0;           ///< the top face when the loading stage began
+  double loading_start_height = 0.0;          ///< (SpecimenMeasures::Reference)
   double wall_seconds = 0.0;                  ///< wall time of the run so far
   std::vector<double> displacement;           ///< nodal displacements, dof order
   std::vector<double> step_increment;         ///< their change over the last load step, dof order

@@ -9,9 +9,11 @@
 #   problem1   problem 1: one element in triaxial compression and in simple
 #              shear in explicit dynamics against fe2dem-rve on the same
 #              packing and path (problem1_*_{dynamic,rve}.prm), and the
-#              triaxial one quasi-static (dynamic relaxation in 8 steps)
-#              against the single RVE in the same relaxed steps and
-#              continuously (problem1_triaxial_{quasi_static,rve_stepped}.prm)
+#              triaxial one quasi-static: by slow loading, the default
+#              (problem1_triaxial_slow_loading.prm), and by dynamic
+#              relaxation in 8 steps against the single RVE in the same
+#              relaxed steps and continuously
+#              (problem1_triaxial_{quasi_static,rve_stepped}.prm)
 #   modulus    the RVE's constrained modulus under a sinusoidal strain of
 #              amplitude 1e-4 at 2.5 and 10 kHz (constrained_modulus.prm
 #              driven by a sine; lsyf_4096 and lsyf_1000, each with the
@@ -26,7 +28,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-[[ $# -eq 2 ]] || { sed -n '2,21p' "$0"; exit 2; }
+[[ $# -eq 2 ]] || { sed -n '2,27p' "$0"; exit 2; }
 build="$(cd "$1" && pwd)"
 what=$2
 results="$here/results"
@@ -150,6 +152,7 @@ problem1() {
   run_rve problem1_shear_rve_affine "$here/problem1_shear_rve.prm" "s#^\(  set Friction .*\)#\1\n  set Inner start = affine#"
   run_rve problem1_triaxial_rve_stepped "$here/problem1_triaxial_rve_stepped.prm" &
   run_macro problem1_triaxial_quasi_static "$here/problem1_triaxial_quasi_static.prm" 1
+  run_macro problem1_triaxial_slow_loading "$here/problem1_triaxial_slow_loading.prm" 1
   wait
   problem1_tables
 }
@@ -170,6 +173,9 @@ problem1_tables() {
     echo "# [LSYF] problem 1, triaxial, quasi-static one element against fe2dem-rve continuous"
     $py "$root/tests/compare_triaxial.py" "$results/problem1_triaxial_quasi_static/out/history.h5" \
       "$results/problem1_triaxial_rve/rve.csv" 3 0.02 || true
+    echo "# triaxial, slow loading (fe2dem's default quasi-static scheme) vs the continuous single RVE"
+    $py "$root/tests/compare_triaxial.py" "$results/problem1_triaxial_slow_loading/out/history.h5" \
+      "$results/problem1_triaxial_rve/rve.csv" 3 0.02 || true
   } | tee "$results/problem1.txt"
 }
 
@@ -180,5 +186,5 @@ case "$what" in
   modulus) modulus ;;
   tables) wave_table; problem1_tables; modulus_table ;;
   all) wave; problem1; modulus ;;
-  *) sed -n '2,21p' "$0"; exit 2 ;;
+  *) sed -n '2,27p' "$0"; exit 2 ;;
 esac

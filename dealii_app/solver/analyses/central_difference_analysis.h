@@ -73,6 +73,15 @@ private:
   double total_time(const dealii::ConditionalOStream& pcout) const;
   /// The current stage's start and length in time.
   std::pair<double, double> stage_time() const;
+  /**
+   * Counts the time steps with a negative kinetic energy @p kinetic in
+   * windows of stability_window steps. @throws std::runtime_error naming
+   * the setting to change if at least unstable_fraction of a window had one:
+   * the step is above the stability limit (the .cpp says why this test).
+   */
+  void watch_stability(double kinetic);
+  static constexpr unsigned int stability_window = 50;
+  static constexpr double unstable_fraction = 0.2;
   /// The macro step with RVEs: whole RVE checks (see the constructor).
   void choose_macro_time_step(const dealii::ConditionalOStream& pcout);
   /// Velocity and acceleration of the prescribed dofs at time @p t (differences over @p dt),
@@ -90,5 +99,8 @@ private:
   /// with RVEs: DEM steps per macro step and that step (0: no RVEs)
   long dem_steps_per_macro_step_ = 0;
   double macro_time_step_ = 0.0;
+  /// watch_stability(): time steps, and those with a negative kinetic energy, in the current window
+  /// (not checkpointed: it only ever stops a run)
+  unsigned int window_steps_ = 0, window_negative_ = 0;
 };
 } // namespace fe2dem::macro

@@ -35,8 +35,6 @@ using namespace dealii;
 template <int dim>
 ExplicitSolver<dim>::ExplicitSolver(const Parameters& parameters, bool resume)
   : prm_(parameters), fe_(FE_Q<dim>(1), dim), quadrature_(parameters.elements.one_point ? 1 : 2),
-    fe_values_F_(fe_, quadrature_, update_gradients),
-    fe_values_f_int_(fe_, quadrature_, update_gradients | update_JxW_values),
     pcout_(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0),
     timer_(pcout_, TimerOutput::never, TimerOutput::wall_times), resume_(resume),
     checkpoint_directory_(parameters.output_directory + "/checkpoints")
@@ -155,14 +153,13 @@ void ExplicitSolver<dim>::make_constitutive_material(const std::string& checkpoi
   }
 }
 
-// One point per element: the mean-strain element data and the hourglass
-// forces, scaled by the material's wave speed (one_point_elements.h).
+// After the material: one point per element scales its hourglass forces
+// by the material's wave speed (one_point_elements.h).
 template <int dim>
-void ExplicitSolver<dim>::make_one_point_elements()
+void ExplicitSolver<dim>::make_elements()
 {
-  if (prm_.elements.one_point)
-    one_point_ = std::make_unique<OnePointElements<dim>>(dof_handler_, prm_.elements, prm_.material.density,
-                                                         material_->wave_speed());
+  elements_ = fe2dem::macro::make_element_formulation<dim>(dof_handler_, quadrature_, prm_.elements, prm_.material.density,
+                                            material_->wave_speed());
 }
 
 // summary.csv and history.h5: new, or as far as the checkpoint got.
@@ -340,23 +337,11 @@ void ExplicitSolver<dim>::assemble_lumped_mass()
 template <int dim>
 void ExplicitSolver<dim>::update_stresses()
 {
-  const FEValuesExtractors::Vector u(0);
   std::vector<Tensor<2, dim>> grad_u(quadrature_.size());
-  Vector<double> u_cell(fe_.dofs_per_cell);
   unsigned int point = 0;
   for (const auto& cell : dof_handler_.active_cell_iterators())
   {
-    if (one_point_)
-    {
-      cell->get_dof_values(fields_.displacement, u_cell);
-      grad_u[0] = one_point_->deformation_gradient(cell->active_cell_index(), u_cell) -
-                  unit_symmetric_tensor<dim>();
-    }
-    else
-    {
-      fe_values_F_.reinit(cell);
-      fe_values_F_[u].get_function_gradients(fields_.displacement, grad_u);
-    }
+    elements_->displacement_gradients(cell, fields_.displacement, grad_u);
     for (unsigned int q = 0; q < quadrature_.size(); ++q, ++point)
     {
       ip_[point].F = unit_symmetric_tensor<dim>() + grad_u[q];
@@ -378,50 +363,19 @@ void ExplicitSolver<dim>::assemble_internal_force()
   assemble_forces_from_stresses();
 }
 
+// f_int, and its hourglass part apart (for the energies; zero with full integration).
 template <int dim>
 void ExplicitSolver<dim>::assemble_forces_from_stresses()
 {
   TimerOutput::Scope t(timer_, "assemble f_int");
-  const FEValuesExtractors::Vector u(0);
-  std::vector<types::global_dof_index> dofs(fe_.dofs_per_cell);
   fields_.f_int = 0.0;
-  if (one_point_)
-  {
-    assemble_one_point_force();
-    return;
-  }
+  fields_.f_hourglass = 0.0;
   unsigned int point = 0;
   for (const auto& cell : dof_handler_.active_cell_iterators())
   {
-    fe_values_f_int_.reinit(cell);
-    cell->get_dof_indices(dofs);
-    for (unsigned int q = 0; q < quadrature_.size(); ++q, ++point)
-      for (unsigned int i = 0; i < fe_.dofs_per_cell; ++i)
-        fields_.f_int[dofs[i]] +=
-          scalar_product(ip_[point].P, fe_values_f_int_[u].gradient(i, q)) * fe_values_f_int_.JxW(q);
-  }
-}
-
-// f_int of one-point elements: the stress part and the hourglass forces (kept apart for the energies).
-template <int dim>
-void ExplicitSolver<dim>::assemble_one_point_force()
-{
-  std::vector<types::global_dof_index> dofs(fe_.dofs_per_cell);
-  Vector<double> u_cell(fe_.dofs_per_cell), v_cell(fe_.dofs_per_cell), f_stress(fe_.dofs_per_cell),
-    f_hourglass(fe_.dofs_per_cell);
-  fields_.f_hourglass = 0.0;
-  for (const auto& cell : dof_handler_.active_cell_iterators())
-  {
-    const unsigned int c = cell->active_cell_index();
-    cell->get_dof_indices(dofs);
-    cell->get_dof_values(fields_.displacement, u_cell);
-    cell->get_dof_values(fields_.velocity, v_cell);
-    one_point_->internal_force(c, ip_[c].P, u_cell, v_cell, f_stress, f_hourglass);
-    for (unsigned int i = 0; i < fe_.dofs_per_cell; ++i)
-    {
-      fields_.f_int[dofs[i]] += f_stress[i] + f_hourglass[i];
-      fields_.f_hourglass[dofs[i]] += f_hourglass[i];
-    }
+    elements_->add_internal_force(cell, &ip_[point], fields_.displacement, fields_.velocity, fields_.f_int,
+                                  fields_.f_hourglass);
+    point += quadrature_.size();
   }
 }
 

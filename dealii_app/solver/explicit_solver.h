@@ -26,7 +26,7 @@
 #include "loading/specimen_measures.h"
 #include "parameters/macro_parameters.h"
 #include "materials/material.h"
-#include "elements/one_point_elements.h"
+#include "elements/element_formulation.h"
 #include "output_lock.h"
 
 #include <deal.II/base/conditional_ostream.h>
@@ -108,8 +108,8 @@ private:
   const dealii::Vector<double>& last_step_increment() const override { return step_increment_; }
   double largest_step_strain() const override { return load_case_->largest_step_strain(); }
 
-  void assemble_one_point_force();
-  void make_one_point_elements();
+  /// The element formulation of 'Quadrature' (one point: scaled by the material's wave speed).
+  void make_elements();
   /// One load step, cut into halves and retried after RVE failures (subsection Faults).
   unsigned int solve_load_step();
 
@@ -187,13 +187,11 @@ private:
   dealii::FESystem<dim> fe_;
   dealii::DoFHandler<dim> dof_handler_;
   const dealii::QGauss<dim> quadrature_;
-  dealii::FEValues<dim> fe_values_F_;     ///< gradients: F at the IPs
-  dealii::FEValues<dim> fe_values_f_int_; ///< gradients and JxW: f_int
   DofMap<dim> dof_map_;
   std::unique_ptr<LoadCase<dim>> load_case_;
   std::unique_ptr<SpecimenMeasures<dim>> measures_;
   std::unique_ptr<Material<dim>> material_;
-  std::unique_ptr<OnePointElements<dim>> one_point_; ///< 'Quadrature' = one point only
+  std::unique_ptr<ElementFormulation<dim>> elements_; ///< F at the IPs, f_int from their P
   std::unique_ptr<Analysis<dim>> analysis_;
   /// The analysis's state read by --resume, until the analysis exists.
   std::vector<double> resumed_analysis_state_;

@@ -35,7 +35,7 @@ void ExplicitSolver<dim>::run()
   analysis_ = make_analysis<dim>(*this, prm_, highest_frequency(), relaxation_frequency(), pcout_);
   make_material(checkpoint);
   refuse_stop_before_first_step("while the RVEs were built");
-  make_one_point_elements();
+  make_elements();
   if (checkpoint.empty())
   {
     analysis_->start();
@@ -285,14 +285,13 @@ template <int dim>
 double ExplicitSolver<dim>::strain_energy() const
 {
   double energy = 0.0;
-  FEValues<dim> fe_values(fe_, quadrature_, update_JxW_values);
+  std::vector<double> volumes;
   unsigned int point = 0;
   for (const auto& cell : dof_handler_.active_cell_iterators())
   {
-    fe_values.reinit(cell);
+    elements_->point_volumes(cell, volumes);
     for (unsigned int q = 0; q < quadrature_.size(); ++q, ++point)
-      energy += material_->strain_energy_density(ip_[point].F) *
-                (one_point_ ? one_point_->volume(cell->active_cell_index()) : fe_values.JxW(q));
+      energy += material_->strain_energy_density(ip_[point].F) * volumes[q];
   }
   return energy;
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs every example as shipped (each with the one command of the README's
 # examples table; outputs in output/NAME) and draws one picture of each into
-# docs/gallery/NAME.png, the pictures of docs/gallery.md. About 9 minutes on
+# docs/gallery/NAME.png, the pictures of docs/gallery.md, and each command with
+# its wall time into docs/gallery/times.txt. About 9 minutes on
 # 2 cores. Builds in build/ first unless BUILD names a build directory.
 # Usage: scripts/make-gallery.sh [BUILD]
 set -euo pipefail
@@ -35,6 +36,8 @@ examples=(
   "rve_simple_shear_2d|rve|$rve rve_templates/examples/simple_shear_2d.prm|one 2D RVE, simple shear"
   "rve_triaxial_3d|rve|$rve rve_templates/examples/triaxial_3d.prm|one 3D RVE (small_3d), triaxial compression"
 )
+times=$gallery/times.txt
+echo "# example, wall seconds, command ($(date -u +%Y-%m-%d), $(nproc) cores, scripts/make-gallery.sh)" > "$times.tmp"
 for e in "${examples[@]}"; do
   IFS='|' read -r name kind command title <<<"$e"
   echo "== $name: $command"
@@ -43,5 +46,7 @@ for e in "${examples[@]}"; do
   mkdir -p output
   $command > "output/$name.log" 2>&1 || { echo "make-gallery: $name failed, see output/$name.log"; exit 1; }
   echo "   $(($(date +%s) - start)) s"
+  echo "$name $(($(date +%s) - start)) ${command//$build/build}" >> "$times.tmp"
   /usr/bin/python3 "$root/scripts/plot_gallery.py" "$kind" "output/$name" "$gallery/$name.png" "$title"
 done
+mv "$times.tmp" "$times"

@@ -1,7 +1,8 @@
 // fix rve/servo for dimension 2 and 3: one translation unit holds the
 // member definitions (the .tpp files, one job each) and instantiates them.
 //   fix_rve_servo.tpp           construction, frame set-up
-//   fix_rve_servo_integrate.tpp time integration, the frame's motion, affine velocities
+//   fix_rve_servo_integrate.tpp time integration, affine velocities (the frame's path:
+//                               FrameMotion<dim>, frame_motion.cpp)
 //   fix_rve_servo_interface.tpp fix_modify, setters, frame and particle views, f_ID
 //   fix_rve_servo_input.tpp     keywords, deformation input, checks from init()
 //   fix_rve_servo_solve.tpp     servo state machine and homogenisation

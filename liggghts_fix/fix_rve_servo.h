@@ -101,6 +101,7 @@
 
 #include "atom.h"
 #include "fix.h"
+#include "frame_motion.h"
 #include "membrane_2d.h"
 #include "membrane_3d.h"
 #include "progress_watch.h"
@@ -223,7 +224,7 @@ public:
   /// Frame fluctuations w per group (edge pair in 2D; face pair or edge group in 3D).
   const std::vector<Vector>& fluctuations() const { return servo_.w; }
   /// Current rotation of each frame particle, in frame order.
-  const std::vector<Rotation>& frame_rotations() const { return theta_frame_; }
+  const std::vector<Rotation>& frame_rotations() const { return motion_.rotations(); }
   /**
    * The convergence test of a quasi-static solve (relaxed by the relaxation
    * criterion, frame balanced within servo_tol) on the state the last check
@@ -242,7 +243,7 @@ public:
   /// Steps without progress after which a solve fails as stalled (keyword stall_steps; 0: off).
   long stall_steps() const { return progress_.window; }
   /// Steps of the current frame move still to run (0: the frame is at rest).
-  int frame_move_steps_left() const { return move_steps_ - move_done_; }
+  int frame_move_steps_left() const { return motion_.steps_left(); }
   /// Steps between checks: C++ drivers run chunks of this length.
   int check_interval() const { return check_every_; }
   /// Step budget of one solve (keyword max_steps, fix_modify max_steps).
@@ -275,7 +276,7 @@ private:
   // --- servo state machine ----------------------------------------------
   /// Starts a solve under @p F, or under keyword F's values if null.
   void begin_solve(const Tensor* F = nullptr);
-  /// Targets of the frame for F_ after the frame was at @p F_from (servo moves: F_).
+  /// Starts the frame's move to its targets for F_ after it was at @p F_from (servo moves: F_).
   void schedule_frame_move(const Tensor& F_from);
   /// Kinetic energy of the inner particles; flags escape and blow-up.
   double check_particles();
@@ -329,8 +330,6 @@ private:
   void half_kick_inner(bool drift);
   /// inner_start affine: adds / removes the affine velocity of the inner particles.
   void add_affine_velocity();
-  /// Velocity gradient of the frame's affine path over the next step of a move.
-  Tensor affine_velocity_gradient() const;
 
   void remove_affine_velocity();
 
@@ -381,15 +380,9 @@ private:
   // the servo's unknowns (fluctuation and rotation per group, the corners'
   // rotation), its gains and its memory (servo_controller.h)
   fe2dem::ServoController<dim> servo_;
-  std::vector<Rotation> theta_frame_; ///< current rotation of each frame particle
 
-  // prescribed frame motion
-  std::vector<Vector> move_start_, move_target_;
-  std::vector<Rotation> rot_start_, rot_target_;
-  int move_steps_ = 0, move_done_ = 0;
-  Tensor move_F_from_ = fe2dem::identity<dim>(); ///< F where the current move started (3D restart state)
-  fe2dem::PolarPath path_; ///< 3D: the path from move_F_from_ to F_ (derived, rebuilt on restart)
-  Tensor affine_step_{};               ///< L dt of inner_start affine during the current move
+  // the frame's prescribed motion and rotations (frame_motion.h)
+  fe2dem::FrameMotion<dim> motion_;
   std::vector<Vector> affine_velocity_; ///< per local index, added this step
   Rotation affine_spin_{};
 

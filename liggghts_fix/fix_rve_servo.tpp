@@ -48,6 +48,24 @@ fe2dem::Vec<dim> first(const double* a)
     v[k] = a[k];
   return v;
 }
+/// The rotation components of an atom's omega (2D: the e3 component).
+template <int dim>
+fe2dem::Spin<dim> spin_of(const double* a)
+{
+  fe2dem::Spin<dim> w;
+  for (std::size_t c = 0; c < w.size(); ++c)
+    w[c] = a[spin_index<dim>(static_cast<int>(c))];
+  return w;
+}
+/// (I/2) |omega|^2 from @p half_inertia = I/2 (2D in the order of the 2D formula before).
+inline double rotational_energy(double half_inertia, const fe2dem::Spin<2>& w)
+{
+  return half_inertia * w[0] * w[0];
+}
+inline double rotational_energy(double half_inertia, const fe2dem::Spin<3>& w)
+{
+  return half_inertia * fe2dem::dot(w, w);
+}
 } // namespace fe2dem_fix_detail
 using namespace fe2dem_fix_detail;
 
@@ -161,7 +179,7 @@ void FixRveServo<dim>::post_create()
 
   const std::size_t nq = frame_.particles.size(), ne = frame_.groups.size();
   servo_.reset(ne);
-  theta_frame_.assign(nq, Rotation{});
+  motion_.reset(nq);
   frame_force_.assign(nq, Vector{});
   frame_local_.assign(nq, 0);
   for (std::size_t q = 0; q < nq; ++q)

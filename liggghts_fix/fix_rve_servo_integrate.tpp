@@ -1,7 +1,8 @@
 // fix rve/servo: time integration. Inner particles by velocity Verlet with
-// local damping on their fluctuation velocity, the frame by prescribed
-// velocities (initial_integrate), the frame forces and the servo after the
-// pair forces (post_force), and the affine velocity of inner_start affine.
+// local damping on their fluctuation velocity, the frame by the prescribed
+// velocities of FrameMotion<dim> (initial_integrate), the frame forces and
+// the servo after the pair forces (post_force), and the affine velocity of
+// inner_start affine.
 #pragma once
 
 #include "fix_rve_servo.h"
@@ -56,81 +57,32 @@ void FixRveServo<dim>::initial_integrate(int)
   double** x = atom->x;
   double** v = atom->v;
   double** omega = atom->omega;
-  const bool moving = move_done_ < move_steps_;
-  const bool affine = moving && affine_step_ != Tensor{};
+  const bool moving = motion_.moving();
+  const bool affine = moving && motion_.affine_step() != Tensor{};
   if (affine)
     add_affine_velocity();
   half_kick_inner(/*drift=*/true);
 
-  // Frame: prescribed velocities; positions interpolated so that the end
-  // of a move lands exactly on the target.
-  if (moving)
-    ++move_done_;
-  const double s = moving ? static_cast<double>(move_done_) / move_steps_ : 0.0;
-  const double inv_t = moving ? 1.0 / (move_steps_ * dtv_) : 0.0;
-  // 3D: the frame follows the polar path F(s) (fe2dem::PolarPath) plus its
-  // fluctuations interpolated linearly, and turns with the path's rotation
-  // plus the servo rotation interpolated linearly,
-  //   theta(s) = theta_F(F(s)) + theta_g(s).
-  // Along this path a rigid rotation about any axis stays rigid and the
-  // frame spins with the affine motion, so the frame-inner contacts see no
-  // relative motion on the way; LIGGGHTS' tangential history (projected
-  // onto the turning tangent plane, not rotated with it) would not forget
-  // one. 2D keeps the linear path and the constant spin (and its bits):
-  // there every rotation has the axis e3 and the linear path of a rotation
-  // is a rotation with a uniform scaling.
-  Tensor F_path = F_;
-  Rotation along_path{}, rot_from{}, rot_to{};
-  if constexpr (dim == 3)
-    if (moving && move_done_ < move_steps_)
-    {
-      Tensor R_path;
-      path_.at(s, F_path, R_path);
-      along_path = fe2dem::rotation_vector(R_path);
-      rot_from = path_.rotation_from;
-      rot_to = path_.rotation_to;
-    }
+  // Frame: prescribed velocities along the motion's path (frame_motion.h);
+  // the end of a move lands exactly on the target.
+  const double s = motion_.advance();
   // frame_local_ was refreshed in the last post_force (after any atom sort).
   for (std::size_t q = 0; q < frame_.particles.size(); ++q)
   {
     const int i = frame_local_[q];
     if (moving)
     {
-      if constexpr (dim == 2)
+      Vector x_now;
+      for (int k = 0; k < dim; ++k)
+        x_now[k] = x[i][k] - frame_.origin[k];
+      const fe2dem::FramePlacement<dim> p = motion_.place(q, frame_.particles[q].X, s, x_now, dtv_);
+      for (int k = 0; k < dim; ++k)
       {
-        const Vector d = move_target_[q] - move_start_[q];
-        const Vector xq = move_done_ == move_steps_ ? move_target_[q] : move_start_[q] + s * d;
-        for (int k = 0; k < dim; ++k)
-        {
-          x[i][k] = frame_.origin[k] + xq[k];
-          v[i][k] = d[k] * inv_t;
-        }
-        const Rotation dth = rot_target_[q] - rot_start_[q];
-        omega[i][2] = dth[0] * inv_t;
-        theta_frame_[q] = move_done_ == move_steps_ ? rot_target_[q] : rot_start_[q] + s * dth;
+        x[i][k] = frame_.origin[k] + p.x[k];
+        v[i][k] = p.v[k];
       }
-      else
-      {
-        const Vector X = frame_.particles[q].X;
-        const Vector w0 = move_start_[q] - fe2dem::apply(move_F_from_, X);
-        const Vector w1 = move_target_[q] - fe2dem::apply(F_, X);
-        const Vector xq = move_done_ == move_steps_
-                            ? move_target_[q]
-                            : fe2dem::apply(F_path, X) + (1.0 - s) * w0 + s * w1;
-        for (int k = 0; k < dim; ++k)
-        {
-          v[i][k] = (xq[k] - (x[i][k] - frame_.origin[k])) / dtv_;
-          x[i][k] = frame_.origin[k] + xq[k];
-        }
-        const Rotation next =
-          move_done_ == move_steps_
-            ? rot_target_[q]
-            : along_path + (rot_start_[q] - rot_from) +
-                s * ((rot_target_[q] - rot_to) - (rot_start_[q] - rot_from));
-        for (int c = 0; c < n_spin; ++c)
-          omega[i][c] = (next[c] - theta_frame_[q][c]) / dtv_;
-        theta_frame_[q] = next;
-      }
+      for (int c = 0; c < n_spin; ++c)
+        omega[i][spin_index<dim>(c)] = p.omega[c];
     }
     else
     {
@@ -191,7 +143,7 @@ void FixRveServo<dim>::post_force(int)
 // inner_start affine (physics.md §2.5 step 1, issue 14): while the frame
 // moves to a new F, each inner particle also moves with the affine velocity
 // field L (x - origin) of the frame's own motion: D = (F - F_before) F_before^-1
-// spread linearly over the move's n steps (affine_step_ = D/n),
+// spread linearly over the move's n steps (FrameMotion::affine_step() = D/n),
 // and turns with its spin, as particles of a periodic cell follow the cell's
 // mean field. The velocity is in atom->v while the pair style runs, so the
 // tangential springs see the affine part of every relative motion; it is
@@ -208,7 +160,8 @@ void FixRveServo<dim>::add_affine_velocity()
   // restarts the frame's move; the mean motion stays that of F_before -> F
   // over the whole solve (before this, in 3D the affine field vanished after
   // the solve's first check: the retargeted path runs from F to F).
-  const Tensor L = timed_steps_ > 0 ? timed_velocity_gradient() : affine_velocity_gradient();
+  const Tensor L =
+    timed_steps_ > 0 ? timed_velocity_gradient() : motion_.affine_velocity_gradient(dtv_);
   const Rotation spin = fe2dem::axial_spin(L);
   affine_velocity_.assign(atom->nlocal, Vector{});
   for (int i = 0; i < atom->nlocal; ++i)
@@ -224,24 +177,6 @@ void FixRveServo<dim>::add_affine_velocity()
         omega[i][spin_index<dim>(c)] += spin[c];
   }
   affine_spin_ = lock_rotation_ ? Rotation{} : spin;
-}
-
-// The velocity gradient that moves a point of the frame's path from step
-// k = move_done_ to k + 1 exactly onto it. 2D: the path x(s) = (I + s D) x0,
-// linear in s = k/n, so L_k = (D/n) (I + (k/n) D)^-1 / dt. 3D: the polar
-// path F(s) (fe2dem::PolarPath), L_k = (F(s_k+1) - F(s_k)) F(s_k)^-1 / dt.
-template <int dim>
-typename FixRveServo<dim>::Tensor FixRveServo<dim>::affine_velocity_gradient() const
-{
-  if constexpr (dim == 2)
-    return (1.0 / dtv_) *
-           matmul(affine_step_, fe2dem::inverse(fe2dem::identity<dim>() + move_done_ * affine_step_));
-  else
-  {
-    const Tensor F0 = path_.F(static_cast<double>(move_done_) / move_steps_);
-    const Tensor F1 = path_.F(static_cast<double>(move_done_ + 1) / move_steps_);
-    return (1.0 / dtv_) * matmul(F1 - F0, fe2dem::inverse(F0));
-  }
 }
 
 template <int dim>

@@ -48,17 +48,9 @@ void FixRveServo<dim>::transfer_state(Stream& s, std::uint32_t version)
   s.io(servo_.theta_corner);
   s.io(servo_.memory);
   s.io(servo_.corner_memory);
-  s.io(theta_frame_);
-  // frame motion in progress
-  s.io(move_start_);
-  s.io(move_target_);
-  s.io(rot_start_);
-  s.io(rot_target_);
-  s.io(move_steps_);
-  s.io(move_done_);
-  s.io(affine_step_);
-  if constexpr (dim == 3)
-    s.io(move_F_from_); // 2D records are unchanged (state version 3)
+  // frame rotations and the motion in progress (3D adds F_from to the
+  // version 3 bytes; 2D records are unchanged)
+  motion_.transfer_state(s);
   // solve state and last results
   s.io(frame_force_);
   s.io(frame_moment_);
@@ -111,7 +103,6 @@ void FixRveServo<dim>::restart(char* buf)
   for (int k = 0; k < dim; ++k)
     if (std::abs(frame_.L[k] - L_[k]) > 1e-12 * L_[k])
       error->fix_error(FLERR, this, "keyword 'cell' differs from the cell in the restart data");
-  if constexpr (dim == 3)
-    path_ = fe2dem::PolarPath(move_F_from_, F_); // derived from the restored ends
+  motion_.restored(F_); // 3D: the path from the restored ends
   restored_ = true;
 }

@@ -41,50 +41,18 @@ void FixRveServo<dim>::begin_solve(const Tensor* F)
   // inner_start affine: the inner particles get the velocity field of the
   // affine motion F_before -> F while the frame moves (see initial_integrate).
   // (The time step may not be known yet: the first solve can begin before init().)
-  affine_step_ = Tensor{};
   if (affine_inner_ && F_ != F_before)
-    affine_step_ = (1.0 / move_steps_) * matmul(F_ - F_before, fe2dem::inverse(F_before));
+    motion_.set_affine_step((1.0 / motion_.steps()) * matmul(F_ - F_before, fe2dem::inverse(F_before)));
+  else
+    motion_.set_affine_step(Tensor{});
 }
 
-// Targets (R2, R3): x_q = F X_q + w_e for every member of group e, corners
-// exactly at F X_c; one rotation per group and one for all corners.
+// The frame's targets F X + w and rotations for F_ after it was at @p F_from
+// (servo moves: F_from = F_), in frame_motion.h.
 template <int dim>
 void FixRveServo<dim>::schedule_frame_move(const Tensor& F_from)
 {
-  move_F_from_ = F_from;
-  const std::size_t nq = frame_.particles.size();
-  move_start_ = frame_positions();
-  move_target_.resize(nq);
-  rot_start_ = theta_frame_;
-  rot_target_.resize(nq);
-  // Frame particles turn with the rigid rotation of F (2D polar angle, 3D
-  // rotation vector of the polar rotation) plus the servo's rotation, so
-  // that a rigid rotation leaves contacts unsheared.
-  Rotation theta_F;
-  if constexpr (dim == 2)
-    theta_F = {{std::atan2(F_[2] - F_[1], F_[0] + F_[3])}};
-  else
-  {
-    path_ = fe2dem::PolarPath(move_F_from_, F_);
-    theta_F = path_.rotation_to;
-  }
-  double largest = 0.0;
-  for (std::size_t q = 0; q < nq; ++q)
-  {
-    const fe2dem::FrameParticle<dim>& p = frame_.particles[q];
-    move_target_[q] = fe2dem::apply(F_, p.X);
-    rot_target_[q] = theta_F + servo_.theta_corner;
-    if (p.pair >= 0)
-    {
-      move_target_[q] = move_target_[q] + servo_.w[p.pair];
-      rot_target_[q] = theta_F + servo_.theta_pair[p.pair];
-    }
-    largest = std::max(largest, fe2dem::norm(move_target_[q] - move_start_[q]));
-    largest = std::max(largest, fe2dem::spin_norm(rot_target_[q] - rot_start_[q]) * p.radius);
-  }
-  move_steps_ = std::max(1, static_cast<int>(std::ceil(largest / (move_rate_ * r_min_))));
-  move_done_ = 0;
-  affine_step_ = Tensor{}; // servo moves are not affine (begin_solve sets it)
+  motion_.schedule(F_from, F_, frame_positions(), frame_, servo_, move_rate_ * r_min_);
 }
 
 template <int dim>
@@ -100,7 +68,7 @@ void FixRveServo<dim>::end_of_step()
   const double ekin = check_particles();
   if (status_ != running)
     return;
-  if (move_done_ >= move_steps_)
+  if (!motion_.moving())
     servo_check(ekin);
   if (status_ == running && step >= max_steps_)
     homogenise(ekin); // report the state we stop in
@@ -218,7 +186,7 @@ void FixRveServo<dim>::fail(Status s, const std::string& reason)
 {
   status_ = s;
   failure_reason_ = reason;
-  move_steps_ = move_done_ = 0; // freeze the frame
+  motion_.stop(); // freeze the frame
   if (error_on_failure_)
   {
     std::string msg = std::string(status_name(s)) + ": " + reason;
@@ -295,18 +263,9 @@ double FixRveServo<dim>::check_particles()
       return 0.0;
     }
     const Vector vi = first<dim>(v[i]);
-    if constexpr (dim == 2)
-    {
-      ekin += 0.5 * atom->rmass[i] * fe2dem::dot(vi, vi) +
-              0.5 * inertia_of(i) * omega[i][2] * omega[i][2];
-      max_omega = std::max(max_omega, std::abs(omega[i][2]));
-    }
-    else
-    {
-      const Vector wi = first<dim>(omega[i]);
-      ekin += 0.5 * atom->rmass[i] * fe2dem::dot(vi, vi) + 0.5 * inertia_of(i) * fe2dem::dot(wi, wi);
-      max_omega = std::max(max_omega, fe2dem::norm(wi));
-    }
+    const Rotation wi = spin_of<dim>(omega[i]);
+    ekin += 0.5 * atom->rmass[i] * fe2dem::dot(vi, vi) + rotational_energy(0.5 * inertia_of(i), wi);
+    max_omega = std::max(max_omega, fe2dem::spin_norm(wi));
   }
   result_.max_inner_omega = max_omega;
   return ekin;

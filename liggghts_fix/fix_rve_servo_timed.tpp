@@ -61,10 +61,10 @@ void FixRveServo<dim>::timed_check(long step)
   ++timed_samples_;
   if (step < timed_steps_)
   {
-    const Tensor affine = affine_step_; // inner_start affine keeps its rate
-    apply_servo_correction();           // retargets the frame: F X + w, new w
-    move_steps_ = static_cast<int>(timed_steps_ - step);
-    affine_step_ = affine;
+    const Tensor affine = motion_.affine_step(); // inner_start affine keeps its rate
+    apply_servo_correction();                    // retargets the frame: F X + w, new w
+    motion_.set_duration(static_cast<int>(timed_steps_ - step));
+    motion_.set_affine_step(affine);
     return;
   }
   apply_servo_correction(); // the next solve starts towards the corrected w
@@ -80,7 +80,7 @@ template <int dim>
 void FixRveServo<dim>::begin_timed_solve(const Tensor& F_before)
 {
   timed_F_from_ = F_before;
-  move_steps_ = static_cast<int>(timed_steps_);
+  motion_.set_duration(static_cast<int>(timed_steps_));
   timed_samples_ = 0;
   timed_P_sum_ = timed_sigma_sum_ = timed_sigma_lw_sum_ = Tensor{};
 }

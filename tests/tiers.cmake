@@ -20,7 +20,7 @@
 
 set(FE2DEM_UNIT_TESTS
   homogenisation_hand_computed rve_continuous_rate_control_model
-  frame_3d_face_triangulation frame_3d_corner_choice frame_servo_controller frame_progress_watch frame_membrane_push_and_balance
+  frame_3d_face_triangulation frame_3d_corner_choice frame_servo_controller frame_motion_paths frame_progress_watch frame_membrane_push_and_balance
   layers_solver_without_liggghts layers_common_without_liggghts layers_rve_driver_without_liggghts docs_parameters_up_to_date
   macro_one_point_element_modes macro_dynamic_relaxation_estimates
   macro_elastic_extension)
@@ -41,6 +41,8 @@ set(FE2DEM_LONG_RUNS
   rve_continuous_triaxial_reference_affine
   rve_continuous_proportional_0.25 rve_continuous_proportional_0.125
   rve_continuous_integral_0.125 rve_continuous_hold_rows
+  rve_continuous_ensemble_0.25 rve_continuous_ensemble_0.125 rve_continuous_ensemble_0.0625
+  rve_continuous_ensemble_0.03125
   # RVEs prepared at a pressure, dynamic (the unprepared dynamic runs stay)
   macro_prepared_rve_holds_its_pressure macro_dynamic_rve_prepared_np1
   macro_dynamic_rve_prepared_np2 restart_dynamic_rve_prepared_kill_np2_resume_np1

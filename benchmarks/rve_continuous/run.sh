@@ -7,6 +7,8 @@
 #                          at 0.25 and 0.125 /s (and timed_servo proportional
 #                          at both rates on small_3d triaxial), lsyf_4096
 #                          triaxial at 0.25 and 0.125 /s to 3 %
+#   run.sh BUILD slow_small_3d  small_3d triaxial and shear at 0.0625 and 0.03125 /s as
+#                          well: the rate ensemble beside YADE's (rate_ensemble.py)
 #   run.sh BUILD stepped   small_3d triaxial, stepped: 0.5 % and 0.25 % steps to 5 %, 0.1 % to 2.5 %
 #   run.sh BUILD held      the 0.25 /s paths of small_3d (to 3 %) and lsyf_1000 (to 2 %)
 #                          held at rest: their F every 0.5 % and 0.25 % as table
@@ -63,6 +65,14 @@ rates() {
   for r in 0.25 0.125; do
     case_run "triaxial_small_3d_${r}_proportional" triaxial_small_3d.prm \
       "$(rate $r); s/^\( *set Frame membrane .*\)/\1\n  set Template variables = timed_servo proportional/"
+  done
+}
+
+slow_small_3d() {
+  for path in triaxial shear; do
+    for r in 0.0625 0.03125; do
+      case_run "${path}_small_3d_${r}" "${path}_small_3d.prm" "$(rate $r)"
+    done
   done
 }
 
@@ -182,6 +192,13 @@ tables() {
     /usr/bin/python3 "$root/benchmarks/yade_periodic/compare_3d.py" "${yade[@]}" \
       --plot "$results/vs_yade$suffix.png" --tables "$results/vs_yade$suffix.md" > "$results/vs_yade$suffix.txt"
   done
+  # small_3d as an ensemble: the RVE's mean over four rates against YADE's (rate_ensemble.py)
+  local y3="$root/benchmarks/yade_periodic/results_3d"
+  for path in triaxial shear; do
+    local ens=("$results/${path}_small_3d_"{0.25,0.125,0.0625,0.03125}/rve.csv)
+    ls "${ens[@]}" > /dev/null 2>&1 && "$here/rate_ensemble.py" "$path" --yade "$y3/small_3d_${path}_rate"{1,0.5,0.25,0.125}.csv \
+      --rve "${ens[@]}" > "$results/ensemble_small_3d_${path}.txt"
+  done
   local p25="$results/triaxial_small_3d_0.25_proportional/rve.csv"
   [[ -f "$p25" ]] && /usr/bin/python3 "$root/benchmarks/yade_periodic/compare_3d.py" --rve "small_3d_triaxial=$p25" \
     --plot "$results/vs_yade_proportional.png" --tables "$results/vs_yade_proportional.md" > "$results/vs_yade_proportional.txt"
@@ -209,12 +226,13 @@ tables() {
 
 case "$what" in
   rates) rates ;;
+  slow_small_3d) slow_small_3d ;;
   stepped) stepped ;;
   held) held ;;
   holds) holds ;;
   tables) tables ;;
   one_element) one_element ;;
   biaxial_2d) biaxial_2d ;;
-  all) rates; stepped; held; holds; one_element; biaxial_2d; tables ;;
+  all) rates; slow_small_3d; stepped; held; holds; one_element; biaxial_2d; tables ;;
   *) sed -n '2,18p' "$0"; exit 2 ;;
 esac

@@ -21,7 +21,7 @@
 set(FE2DEM_UNIT_TESTS
   homogenisation_hand_computed rve_continuous_rate_control_model
   frame_3d_face_triangulation frame_3d_corner_choice frame_servo_controller frame_motion_paths frame_progress_watch frame_membrane_push_and_balance
-  layers_solver_without_liggghts layers_common_without_liggghts layers_rve_driver_without_liggghts docs_parameters_up_to_date
+  layers_solver_without_liggghts layers_solver_parts_without_liggghts layers_common_without_liggghts layers_rve_driver_without_liggghts docs_parameters_up_to_date
   macro_one_point_element_modes macro_dynamic_relaxation_estimates
   macro_elastic_extension)
 
@@ -51,6 +51,9 @@ set(FE2DEM_LONG_RUNS
   macro_example_biaxial_2x4_vs_strict
   # the shipped examples not run elsewhere, as shipped (minutes each)
   macro_example_biaxial_1x1_as_shipped rve_example_triaxial_3d_as_shipped
+  # the 3D simple-shear example against its fe2dem-rve reference (55 s; the
+  # 3D slow-loading column with RVEs stays)
+  rve_example_simple_shear_3d_reference
   # [LSYF] problem 2 at full size: the linear wave column and its M (minutes)
   macro_lsyf_constrained_modulus macro_lsyf_wave_column_1um
   # slow loading against the continuous reference (the column stays)

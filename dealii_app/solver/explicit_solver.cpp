@@ -289,12 +289,12 @@ void ExplicitSolver<dim>::setup_system()
     v->reinit(n);
   ip_.resize(triangulation_.n_active_cells() * quadrature_.size());
   FEValues<dim> fe_values(fe_, quadrature_, update_quadrature_points);
-  unsigned int point = 0;
   for (const auto& cell : dof_handler_.active_cell_iterators())
   {
     fe_values.reinit(cell);
+    const auto ips = ip_states_of(cell);
     for (unsigned int q = 0; q < quadrature_.size(); ++q)
-      ip_[point++].position = fe_values.quadrature_point(q);
+      ips[q].position = fe_values.quadrature_point(q);
   }
   load_case_ = make_load_case<dim>(dof_map_, hi_[1] - lo_[1], prm_);
   measures_ = std::make_unique<SpecimenMeasures<dim>>(dof_map_, hi_[1] - lo_[1]);
@@ -338,14 +338,14 @@ template <int dim>
 void ExplicitSolver<dim>::update_stresses()
 {
   std::vector<Tensor<2, dim>> grad_u(quadrature_.size());
-  unsigned int point = 0;
   for (const auto& cell : dof_handler_.active_cell_iterators())
   {
     elements_->displacement_gradients(cell, fields_.displacement, grad_u);
-    for (unsigned int q = 0; q < quadrature_.size(); ++q, ++point)
+    const auto ips = ip_states_of(cell);
+    for (unsigned int q = 0; q < quadrature_.size(); ++q)
     {
-      ip_[point].F = unit_symmetric_tensor<dim>() + grad_u[q];
-      if (!(determinant(ip_[point].F) > 0.0))
+      ips[q].F = unit_symmetric_tensor<dim>() + grad_u[q];
+      if (!(determinant(ips[q].F) > 0.0))
         throw std::runtime_error("det F <= 0 at a quadrature point of cell " +
                                  std::to_string(cell->active_cell_index()) +
                                  ": the mesh inverted; use more load steps or a smaller "
@@ -370,13 +370,9 @@ void ExplicitSolver<dim>::assemble_forces_from_stresses()
   TimerOutput::Scope t(timer_, "assemble f_int");
   fields_.f_int = 0.0;
   fields_.f_hourglass = 0.0;
-  unsigned int point = 0;
   for (const auto& cell : dof_handler_.active_cell_iterators())
-  {
-    elements_->add_internal_force(cell, &ip_[point], fields_.displacement, fields_.velocity, fields_.f_int,
-                                  fields_.f_hourglass);
-    point += quadrature_.size();
-  }
+    elements_->add_internal_force(cell, ip_states_of(cell).data(), fields_.displacement, fields_.velocity,
+                                  fields_.f_int, fields_.f_hourglass);
 }
 
 template class ExplicitSolver<2>;

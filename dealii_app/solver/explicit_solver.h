@@ -29,6 +29,7 @@
 #include "elements/element_formulation.h"
 #include "output_lock.h"
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -200,7 +201,19 @@ private:
   MacroFields fields_;
   /// displacement change over the last converged load step (its sub-steps together)
   dealii::Vector<double> step_increment_;
-  std::vector<IpState<dim>> ip_; ///< cell by cell, quadrature_.size() per cell
+  std::vector<IpState<dim>> ip_; ///< cell by cell, quadrature_.size() per cell (ip_states_of())
+  using CellIterator = typename dealii::DoFHandler<dim>::active_cell_iterator;
+  /// The IP states of @p cell: quadrature_.size() entries of ip_ keyed by its
+  /// active cell index (every rank holds the whole mesh; the index runs in
+  /// the order of the active cells, so it is the IP order of history.h5).
+  dealii::ArrayView<IpState<dim>> ip_states_of(const CellIterator& cell)
+  {
+    return {&ip_[cell->active_cell_index() * quadrature_.size()], quadrature_.size()};
+  }
+  dealii::ArrayView<const IpState<dim>> ip_states_of(const CellIterator& cell) const
+  {
+    return {&ip_[cell->active_cell_index() * quadrature_.size()], quadrature_.size()};
+  }
   double h_min_ = 0.0;
   dealii::Point<dim> lo_, hi_; ///< bounding box of the reference mesh
   int rank_ = 0;

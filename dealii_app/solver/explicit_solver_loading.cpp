@@ -286,12 +286,12 @@ double ExplicitSolver<dim>::strain_energy() const
 {
   double energy = 0.0;
   std::vector<double> volumes;
-  unsigned int point = 0;
   for (const auto& cell : dof_handler_.active_cell_iterators())
   {
     elements_->point_volumes(cell, volumes);
-    for (unsigned int q = 0; q < quadrature_.size(); ++q, ++point)
-      energy += material_->strain_energy_density(ip_[point].F) * volumes[q];
+    const auto ips = ip_states_of(cell);
+    for (unsigned int q = 0; q < quadrature_.size(); ++q)
+      energy += material_->strain_energy_density(ips[q].F) * volumes[q];
   }
   return energy;
 }

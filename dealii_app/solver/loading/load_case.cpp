@@ -198,44 +198,58 @@ typename LoadCase<dim>::Constraints CompressionLoadCase<dim>::constraints(unsign
   return values;
 }
 
-template <int dim>
-void add_follower_pressure(const typename DoFHandler<dim>::face_iterator& face, const Tensor<1, dim>& outward,
-                           double p, const Vector<double>& u, Vector<double>& f)
+namespace
 {
-  constexpr unsigned int n_vertices = dim == 2 ? 2 : 4;
-  // vertices in deal.II's lexicographic face order (3D: (0,0), (1,0), (0,1), (1,1))
-  Tensor<1, dim> x[n_vertices];
-  for (unsigned int v = 0; v < n_vertices; ++v)
+/// The deformed vertices x = X + u of @p face in deal.II's lexicographic face
+/// order (3D: (0,0), (1,0), (0,1), (1,1)).
+template <int dim>
+std::array<Tensor<1, dim>, GeometryInfo<dim - 1>::vertices_per_cell> deformed_vertices(
+  const typename DoFHandler<dim>::face_iterator& face, const Vector<double>& u)
+{
+  std::array<Tensor<1, dim>, GeometryInfo<dim - 1>::vertices_per_cell> x;
+  for (unsigned int v = 0; v < x.size(); ++v)
     for (unsigned int c = 0; c < dim; ++c)
       x[v][c] = face->vertex(v)[c] + u[face->vertex_dof_index(v, c)];
-  if constexpr (dim == 2)
-  {
-    const Tensor<1, dim> d = x[1] - x[0];
-    Tensor<1, dim> n;
-    n[0] = d[1];
-    n[1] = -d[0];
-    if (n * outward < 0.0)
-      n *= -1.0;
-    for (unsigned int v = 0; v < 2; ++v)
-      for (unsigned int c = 0; c < dim; ++c)
-        f[face->vertex_dof_index(v, c)] -= 0.5 * p * n[c];
-  }
-  else
-  {
-    const double sign = cross_product_3d(x[1] - x[0] + x[3] - x[2], x[2] - x[0] + x[3] - x[1]) * outward > 0.0 ? 1.0 : -1.0;
-    const double g[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
-    for (const double xi : g)
-      for (const double eta : g)
-      {
-        const Tensor<1, dim> x_xi = (1.0 - eta) * (x[1] - x[0]) + eta * (x[3] - x[2]);
-        const Tensor<1, dim> x_eta = (1.0 - xi) * (x[2] - x[0]) + xi * (x[3] - x[1]);
-        const Tensor<1, dim> n_da = 0.25 * sign * cross_product_3d(x_xi, x_eta); // Gauss weight 1/4
-        const double N[4] = {(1.0 - xi) * (1.0 - eta), xi * (1.0 - eta), (1.0 - xi) * eta, xi * eta};
-        for (unsigned int v = 0; v < 4; ++v)
-          for (unsigned int c = 0; c < dim; ++c)
-            f[face->vertex_dof_index(v, c)] -= p * N[v] * n_da[c];
-      }
-  }
+  return x;
+}
+} // namespace
+
+// 2D: a straight edge, half of -p n da to each node.
+template <>
+void add_follower_pressure<2>(const DoFHandler<2>::face_iterator& face, const Tensor<1, 2>& outward, double p,
+                              const Vector<double>& u, Vector<double>& f)
+{
+  const auto x = deformed_vertices<2>(face, u);
+  const Tensor<1, 2> d = x[1] - x[0];
+  Tensor<1, 2> n;
+  n[0] = d[1];
+  n[1] = -d[0];
+  if (n * outward < 0.0)
+    n *= -1.0;
+  for (unsigned int v = 0; v < 2; ++v)
+    for (unsigned int c = 0; c < 2; ++c)
+      f[face->vertex_dof_index(v, c)] -= 0.5 * p * n[c];
+}
+
+// 3D: a bilinear face, -p int N_a (x_xi x x_eta) by 2x2 Gauss points.
+template <>
+void add_follower_pressure<3>(const DoFHandler<3>::face_iterator& face, const Tensor<1, 3>& outward, double p,
+                              const Vector<double>& u, Vector<double>& f)
+{
+  const auto x = deformed_vertices<3>(face, u);
+  const double sign = cross_product_3d(x[1] - x[0] + x[3] - x[2], x[2] - x[0] + x[3] - x[1]) * outward > 0.0 ? 1.0 : -1.0;
+  const double g[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
+  for (const double xi : g)
+    for (const double eta : g)
+    {
+      const Tensor<1, 3> x_xi = (1.0 - eta) * (x[1] - x[0]) + eta * (x[3] - x[2]);
+      const Tensor<1, 3> x_eta = (1.0 - xi) * (x[2] - x[0]) + xi * (x[3] - x[1]);
+      const Tensor<1, 3> n_da = 0.25 * sign * cross_product_3d(x_xi, x_eta); // Gauss weight 1/4
+      const double N[4] = {(1.0 - xi) * (1.0 - eta), xi * (1.0 - eta), (1.0 - xi) * eta, xi * eta};
+      for (unsigned int v = 0; v < 4; ++v)
+        for (unsigned int c = 0; c < 3; ++c)
+          f[face->vertex_dof_index(v, c)] -= p * N[v] * n_da[c];
+    }
 }
 
 // Follower pressure on the sides (and the top in stage 1).
@@ -332,8 +346,4 @@ template class AffineLoadCase<2>;
 template class AffineLoadCase<3>;
 template std::unique_ptr<LoadCase<2>> make_load_case(const DofMap<2>&, double, const Parameters&);
 template std::unique_ptr<LoadCase<3>> make_load_case(const DofMap<3>&, double, const Parameters&);
-template void add_follower_pressure<2>(const DoFHandler<2>::face_iterator&, const Tensor<1, 2>&, double,
-                                       const Vector<double>&, Vector<double>&);
-template void add_follower_pressure<3>(const DoFHandler<3>::face_iterator&, const Tensor<1, 3>&, double,
-                                       const Vector<double>&, Vector<double>&);
 } // namespace fe2dem::macro

@@ -56,6 +56,12 @@ template <int dim>
 void add_follower_pressure(const typename dealii::DoFHandler<dim>::face_iterator& face,
                            const dealii::Tensor<1, dim>& outward, double p, const dealii::Vector<double>& u,
                            dealii::Vector<double>& f);
+template <>
+void add_follower_pressure<2>(const dealii::DoFHandler<2>::face_iterator& face, const dealii::Tensor<1, 2>& outward,
+                              double p, const dealii::Vector<double>& u, dealii::Vector<double>& f);
+template <>
+void add_follower_pressure<3>(const dealii::DoFHandler<3>::face_iterator& face, const dealii::Tensor<1, 3>& outward,
+                              double p, const dealii::Vector<double>& u, dealii::Vector<double>& f);
 
 /// Every dof's node and where it lies, fixed for a run.
 template <int dim>

@@ -102,14 +102,14 @@
 #include "atom.h"
 #include "fix.h"
 #include "frame_motion.h"
-#include "membrane_2d.h"
-#include "membrane_3d.h"
+#include "membrane.h"
 #include "progress_watch.h"
 #include "rve_homogenisation.h"
 #include "servo_controller.h"
 
 #include <array>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -367,7 +367,7 @@ private:
   bool affine_inner_ = false; ///< inner_start affine
   double move_rate_ = 1e-3;
   bool error_on_failure_ = true;
-  bool membrane_on_ = true;
+  std::string membrane_name_ = "yes"; ///< keyword membrane (fe2dem::frame_membrane_names())
   bool timed_integral_ = true; ///< timed_servo integral (else proportional)
   double max_overlap_ = 0.5;
 
@@ -388,7 +388,7 @@ private:
 
   // per-step records
   std::vector<int> frame_local_;      ///< local index of each frame particle
-  fe2dem::Membrane<dim> membrane_;    ///< keyword membrane (membrane.h)
+  std::unique_ptr<fe2dem::FrameMembrane<dim>> membrane_; ///< keyword membrane (membrane.h); null: none
   std::vector<Vector> frame_force_;   ///< a_q
   std::vector<Rotation> frame_moment_; ///< m_q
   double unbalanced_sq_sum_ = 0.0;

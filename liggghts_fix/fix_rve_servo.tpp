@@ -330,6 +330,7 @@ int FixRveServo<dim>::local_index(int tag) const
 template <int dim>
 void FixRveServo<dim>::setup(int vflag)
 {
-  membrane_.mark_stale(); // atoms may have been sorted or read from a restart
+  if (membrane_)
+    membrane_->mark_stale(); // atoms may have been sorted or read from a restart
   post_force(vflag);
 }

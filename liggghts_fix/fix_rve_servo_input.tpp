@@ -12,6 +12,7 @@
 #include "update.h"
 #include "variable.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -127,7 +128,17 @@ void FixRveServo<dim>::parse_arguments(int narg, char** arg)
     {"move_rate", {1, [&](const char* kw, char** v) { move_rate_ = number(kw, v[0], 0.0, true); }}},
     {"on_failure", {1, [&](const char* kw, char** v) { error_on_failure_ = choice(kw, v[0], "error", "flag"); }}},
     {"max_overlap", {1, [&](const char* kw, char** v) { max_overlap_ = number(kw, v[0], 0.0, true); }}},
-    {"membrane", {1, [&](const char* kw, char** v) { membrane_on_ = choice(kw, v[0], "yes", "no"); }}},
+    {"membrane", {1, [&](const char* kw, char** v) {
+                    const std::vector<std::string> names = fe2dem::frame_membrane_names();
+                    if (std::find(names.begin(), names.end(), v[0]) == names.end())
+                    {
+                      std::string msg = std::string("keyword '") + kw + "': value '" + v[0] + "' must be";
+                      for (std::size_t k = 0; k < names.size(); ++k)
+                        msg += (k == 0 ? " '" : k + 1 < names.size() ? ", '" : " or '") + names[k] + "'";
+                      error->fix_error(FLERR, this, msg.c_str());
+                    }
+                    membrane_name_ = v[0];
+                  }}},
     {"timed_servo", {1, [&](const char* kw, char** v) {
                        timed_integral_ = choice(kw, v[0], "integral", "proportional");
                      }}},
@@ -257,7 +268,7 @@ void FixRveServo<dim>::error_checks()
                         ") also integrates these particles; rve/servo integrates them itself";
       error->fix_error(FLERR, this, msg.c_str());
     }
-  if (membrane_on_ && !law_.has_normal_stiffness())
+  if (membrane_name_ != "no" && !law_.has_normal_stiffness())
     error->fix_error(FLERR, this, "keyword 'membrane yes' needs the contact law's normal force: "
                                   "'kn' (fix property/global, hooke/stiffness) or Debian's hertz "
                                   "model with youngsModulus and poissonsRatio; use 'membrane no' "

@@ -1,6 +1,7 @@
 // The frame membrane of fix rve/servo (keyword membrane): the fix's side of
-// it. Membrane<2> (membrane_2d.h) and Membrane<3> (membrane_3d.h) hold the
-// geometry and the forces; here they get the atoms and the frame's state.
+// it. The membrane the keyword names (make_frame_membrane, membrane.cpp:
+// Membrane<2> of membrane_2d.h, Membrane<3> of membrane_3d.h) holds the
+// geometry and the forces; here it gets the atoms and the frame's state.
 #pragma once
 
 #include "fix_rve_servo.h"
@@ -15,11 +16,12 @@ using namespace LAMMPS_NS;
 template <int dim>
 void FixRveServo<dim>::build_membrane()
 {
-  if (!membrane_on_)
-    return;
+  if (membrane_ || membrane_name_ == "no")
+    return; // built once: the frame never changes
   try
   {
-    membrane_.build(frame_, L_);
+    membrane_ = fe2dem::make_frame_membrane<dim>(membrane_name_);
+    membrane_->build(frame_, L_);
   }
   catch (const std::exception& e)
   {
@@ -30,11 +32,11 @@ void FixRveServo<dim>::build_membrane()
 template <int dim>
 void FixRveServo<dim>::apply_membrane()
 {
-  if (!membrane_on_ || !law_.has_normal_stiffness())
+  if (!membrane_ || !law_.has_normal_stiffness())
     return;
   const fe2dem::MembraneStep<dim> step{atom->x,       atom->f,   atom->radius, atom->mask,
                                        atom->nlocal,  groupbit,  frame_groupbit_, neighbor->skin,
                                        neighbor->lastcall, frame_, frame_local_, F_,
                                        r_max_,        law_};
-  result_.membrane_steps += membrane_.apply(step);
+  result_.membrane_steps += membrane_->apply(step);
 }

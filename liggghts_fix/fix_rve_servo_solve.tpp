@@ -22,7 +22,8 @@ void FixRveServo<dim>::begin_solve(const Tensor* F)
 {
   const Tensor F_before = F_;
   F_ = F ? checked_deformation(*F) : evaluate_deformation();
-  membrane_.mark_stale(); // its candidate search depends on F
+  if (membrane_)
+    membrane_->mark_stale(); // its candidate search depends on F
   if (!keep_fluctuations_)
     servo_.zero_fluctuations();
   status_ = running;

@@ -19,6 +19,8 @@
 #include "rve_frame.h"
 
 #include <cstdint>
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace fe2dem
@@ -48,6 +50,35 @@ struct MembraneCandidate
   int i = 0;                 ///< local index of the inner particle
   int side = 0, segment = 0; ///< 2D: cell side and segment; 3D: face and triangle
 };
+
+/**
+ * What fix rve/servo asks of a membrane (keyword membrane). The frame
+ * membranes Membrane<2> and Membrane<3> are the ones there are; another
+ * (say a membrane with its own stiffness) is a class derived from this one
+ * in its own file pair and one line in make_frame_membrane() (membrane.cpp),
+ * which also gives the keyword its new value.
+ */
+template <int dim>
+class FrameMembrane
+{
+public:
+  virtual ~FrameMembrane() = default;
+  /**
+   * Its geometry from the frame of cell @p L; once (the frame never changes).
+   * @throws std::runtime_error naming what cannot be built
+   */
+  virtual void build(const FrameTopology<dim>& frame, const Vec<dim>& L) = 0;
+  /// F or the atoms changed: collect the candidates again at the next apply().
+  virtual void mark_stale() = 0;
+  /// Adds the membrane forces of this step; @return the particle contacts it had.
+  virtual long apply(const MembraneStep<dim>& s) = 0;
+};
+
+/// The values keyword membrane takes: "yes" (the frame membrane of the dimension) and "no".
+std::vector<std::string> frame_membrane_names();
+/// The membrane keyword membrane names (nullptr for "no"). @pre @p name is one of frame_membrane_names().
+template <int dim>
+std::unique_ptr<FrameMembrane<dim>> make_frame_membrane(const std::string& name);
 
 /// Specialised for dim = 2 (membrane_2d.h) and 3 (membrane_3d.h).
 template <int dim>

@@ -21,15 +21,15 @@
 namespace fe2dem
 {
 template <>
-class Membrane<2>
+class Membrane<2> final : public FrameMembrane<2>
 {
 public:
   /// Segments between neighbouring frame particles, grouped by cell side (frame of cell @p L).
-  void build(const FrameTopology<2>& frame, const Vec2& L);
+  void build(const FrameTopology<2>& frame, const Vec2& L) override;
   /// F or the atoms changed: collect the candidates again at the next apply().
-  void mark_stale() { stale_ = true; }
+  void mark_stale() override { stale_ = true; }
   /// Adds the membrane forces of this step; @return the particle contacts it had.
-  long apply(const MembraneStep<2>& s);
+  long apply(const MembraneStep<2>& s) override;
 
 private:
   struct Segment

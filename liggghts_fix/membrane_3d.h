@@ -31,7 +31,7 @@
 namespace fe2dem
 {
 template <>
-class Membrane<3>
+class Membrane<3> final : public FrameMembrane<3>
 {
 public:
   /**
@@ -39,11 +39,11 @@ public:
    * @throws std::runtime_error naming the face or the frame particle if a face cannot be
    *         triangulated or a vertex has no +L image.
    */
-  void build(const FrameTopology<3>& frame, const Vec3& L);
+  void build(const FrameTopology<3>& frame, const Vec3& L) override;
   /// F or the atoms changed: collect the candidates again at the next apply().
-  void mark_stale() { stale_ = true; }
+  void mark_stale() override { stale_ = true; }
   /// Adds the membrane forces of this step; @return the particle contacts it had.
-  long apply(const MembraneStep<3>& s);
+  long apply(const MembraneStep<3>& s) override;
 
 private:
   struct Triangle

@@ -4,7 +4,7 @@
 // particle is the contact law's normal force at the crossing, along the
 // inward normal; the reactions on the frame particles balance it in force and
 // moment (so P holds them); a particle clear of the surface feels nothing;
-// F rotates the picture with it.
+// F rotates the picture with it; the keyword's values make the right one.
 #include "check.h"
 #include "membrane_2d.h"
 #include "membrane_3d.h"
@@ -164,5 +164,11 @@ int main()
   Checker c("membrane");
   two_d(c);
   three_d(c);
+  // keyword membrane's values and what they make (membrane.cpp)
+  c.truth("make_frame_membrane<2>(\"yes\") is the 2D frame membrane",
+          dynamic_cast<fe2dem::Membrane<2>*>(fe2dem::make_frame_membrane<2>("yes").get()) != nullptr);
+  c.truth("make_frame_membrane<3>(\"yes\") is the 3D frame membrane",
+          dynamic_cast<fe2dem::Membrane<3>*>(fe2dem::make_frame_membrane<3>("yes").get()) != nullptr);
+  c.truth("\"no\": none", !fe2dem::make_frame_membrane<3>("no") && !fe2dem::make_frame_membrane<2>("no"));
   return c.summary();
 }

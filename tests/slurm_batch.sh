@@ -36,8 +36,14 @@ for _ in $(seq 3000); do
 done
 [[ -f out/summary.csv && $(wc -l < out/summary.csv) -ge 3 ]] ||
   fail "no 3 load steps while the job ran (job log: $(cat fe2dem-$job.log 2>/dev/null))"
-ranks=($(pgrep -f "^$exe case.prm"))
-[[ ${#ranks[@]} -eq 2 ]] || fail "expected 2 fe2dem ranks, found ${#ranks[@]}"
+# This job's ranks: other tests may run the same fe2dem on their own
+# case.prm at the same time, so only the processes started in $work count.
+here=$(pwd -P)
+ranks=()
+for pid in $(pgrep -f "^$exe case.prm"); do
+  [[ $(readlink "/proc/$pid/cwd" 2>/dev/null) == "$here" ]] && ranks+=("$pid")
+done
+[[ ${#ranks[@]} -eq 2 ]] || fail "expected 2 fe2dem ranks in $here, found ${#ranks[@]}"
 kill -STOP "${ranks[@]}"
 # 9 minutes: below the 10 of --signal=B:USR1@600, so the signal is due at once,
 # and as far from the hard limit as that allows for the rest of the run.

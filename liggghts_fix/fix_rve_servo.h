@@ -367,7 +367,6 @@ private:
   bool affine_inner_ = false; ///< inner_start affine
   double move_rate_ = 1e-3;
   bool error_on_failure_ = true;
-  std::string membrane_name_ = "yes"; ///< keyword membrane (fe2dem::frame_membrane_names())
   bool timed_integral_ = true; ///< timed_servo integral (else proportional)
   double max_overlap_ = 0.5;
 
@@ -388,7 +387,8 @@ private:
 
   // per-step records
   std::vector<int> frame_local_;      ///< local index of each frame particle
-  std::unique_ptr<fe2dem::FrameMembrane<dim>> membrane_; ///< keyword membrane (membrane.h); null: none
+  /// keyword membrane (membrane.h; made as the keyword is read); null: none
+  std::unique_ptr<fe2dem::FrameMembrane<dim>> membrane_ = fe2dem::make_frame_membrane<dim>("yes");
   std::vector<Vector> frame_force_;   ///< a_q
   std::vector<Rotation> frame_moment_; ///< m_q
   double unbalanced_sq_sum_ = 0.0;

@@ -54,13 +54,21 @@ void FixRveServo<dim>::parse_arguments(int narg, char** arg)
     }
     return v;
   };
+  // The index of @p value in @p names, or an error listing them ("'a', 'b' or 'c'").
+  auto one_of = [&](const char* keyword, const char* value, const std::vector<std::string>& names) {
+    const auto it = std::find(names.begin(), names.end(), value);
+    if (it == names.end())
+    {
+      std::string msg = std::string("keyword '") + keyword + "': value '" + value + "' must be";
+      for (std::size_t k = 0; k < names.size(); ++k)
+        msg += (k == 0 ? " '" : k + 1 < names.size() ? ", '" : " or '") + names[k] + "'";
+      error->fix_error(FLERR, this, msg.c_str());
+    }
+    return static_cast<std::size_t>(it - names.begin());
+  };
+  // true for @p a, false for @p b
   auto choice = [&](const char* keyword, const char* value, const char* a, const char* b) {
-    if (std::strcmp(value, a) == 0 || std::strcmp(value, b) == 0)
-      return std::strcmp(value, a) == 0;
-    std::string msg = std::string("keyword '") + keyword + "': value '" + value + "' must be '" +
-                      a + "' or '" + b + "'";
-    error->fix_error(FLERR, this, msg.c_str());
-    return false;
+    return one_of(keyword, value, {a, b}) == 0;
   };
 
   // keyword -> number of values and how to apply them (v = the values)
@@ -130,14 +138,7 @@ void FixRveServo<dim>::parse_arguments(int narg, char** arg)
     {"max_overlap", {1, [&](const char* kw, char** v) { max_overlap_ = number(kw, v[0], 0.0, true); }}},
     {"membrane", {1, [&](const char* kw, char** v) {
                     const std::vector<std::string> names = fe2dem::frame_membrane_names();
-                    if (std::find(names.begin(), names.end(), v[0]) == names.end())
-                    {
-                      std::string msg = std::string("keyword '") + kw + "': value '" + v[0] + "' must be";
-                      for (std::size_t k = 0; k < names.size(); ++k)
-                        msg += (k == 0 ? " '" : k + 1 < names.size() ? ", '" : " or '") + names[k] + "'";
-                      error->fix_error(FLERR, this, msg.c_str());
-                    }
-                    membrane_name_ = v[0];
+                    membrane_ = fe2dem::make_frame_membrane<dim>(names[one_of(kw, v[0], names)]);
                   }}},
     {"timed_servo", {1, [&](const char* kw, char** v) {
                        timed_integral_ = choice(kw, v[0], "integral", "proportional");
@@ -268,7 +269,7 @@ void FixRveServo<dim>::error_checks()
                         ") also integrates these particles; rve/servo integrates them itself";
       error->fix_error(FLERR, this, msg.c_str());
     }
-  if (membrane_name_ != "no" && !law_.has_normal_stiffness())
+  if (membrane_ && !law_.has_normal_stiffness())
     error->fix_error(FLERR, this, "keyword 'membrane yes' needs the contact law's normal force: "
                                   "'kn' (fix property/global, hooke/stiffness) or Debian's hertz "
                                   "model with youngsModulus and poissonsRatio; use 'membrane no' "

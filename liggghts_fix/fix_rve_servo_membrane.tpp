@@ -16,11 +16,10 @@ using namespace LAMMPS_NS;
 template <int dim>
 void FixRveServo<dim>::build_membrane()
 {
-  if (membrane_ || membrane_name_ == "no")
-    return; // built once: the frame never changes
+  if (!membrane_)
+    return;
   try
   {
-    membrane_ = fe2dem::make_frame_membrane<dim>(membrane_name_);
     membrane_->build(frame_, L_);
   }
   catch (const std::exception& e)

@@ -158,7 +158,7 @@ void ExplicitSolver<dim>::make_constitutive_material(const std::string& checkpoi
 template <int dim>
 void ExplicitSolver<dim>::make_elements()
 {
-  elements_ = fe2dem::macro::make_element_formulation<dim>(dof_handler_, quadrature_, prm_.elements, prm_.material.density,
+  elements_ = make_element_formulation<dim>(dof_handler_, quadrature_, prm_.elements, prm_.material.density,
                                             material_->wave_speed());
 }
 

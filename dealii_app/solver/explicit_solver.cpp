@@ -5,6 +5,7 @@
 #include "materials/corotational_material.h"
 #include "materials/neo_hookean.h"
 #include "materials/rve_material.h"
+#include "nonlocal/nonlocal_material.h"
 #include "prepared_rve.h"
 #include "servo_rve_factory.h"
 
@@ -98,12 +99,43 @@ void ExplicitSolver<dim>::prepare_output_directory()
 template <int dim>
 void ExplicitSolver<dim>::make_material(const std::string& checkpoint)
 {
+  std::unique_ptr<NonlocalOperator<dim>> averaging = make_nonlocal_operator(); // before any RVE is built
   make_constitutive_material(checkpoint);
   if (material_->wave_speed() != prm_.material.wave_speed()) // the stable steps were estimated with it
     throw std::logic_error("ExplicitSolver: the material's wave speed differs from "
                            "MaterialParameters::wave_speed()");
   if (prm_.elements.corotational)
     material_ = std::make_unique<CorotationalMaterial<dim>>(std::move(material_));
+  if (averaging) // outside the corotational update: the increments are averaged, then rotated (physics.md 1.4)
+    material_ = std::make_unique<NonlocalMaterial<dim>>(std::move(material_), std::move(*averaging),
+                                                        prm_.nonlocal.alpha);
+}
+
+// The neighbour sets of 'Interaction radius' over the IPs' reference
+// positions; none for the local continuum. A radius that reaches no other
+// IP would make a run labelled nonlocal local, so it is refused.
+template <int dim>
+std::unique_ptr<NonlocalOperator<dim>> ExplicitSolver<dim>::make_nonlocal_operator() const
+{
+  if (!prm_.nonlocal.active())
+    return nullptr;
+  std::vector<Point<dim>> positions(ip_.size());
+  for (std::size_t k = 0; k < ip_.size(); ++k)
+    positions[k] = ip_[k].position;
+  auto averaging = std::make_unique<NonlocalOperator<dim>>(positions, prm_.nonlocal.radius);
+  std::size_t largest = 0, total = 0;
+  for (unsigned int k = 0; k < averaging->n_points(); ++k)
+    largest = std::max(largest, averaging->neighbours(k).size()), total += averaging->neighbours(k).size();
+  if (largest < 2 && ip_.size() > 1)
+    throw std::runtime_error("subsection Nonlocal: 'Interaction radius' = " + std::to_string(prm_.nonlocal.radius) +
+                             " m reaches no other quadrature point (the smallest cell is " +
+                             std::to_string(h_min_ * std::sqrt(double(dim))) +
+                             " m across): every point would average only itself; give a radius of a few "
+                             "cells (a band is about 2R wide) or 0 for the local continuum");
+  pcout_ << "nonlocal operator: R = " << prm_.nonlocal.radius << " m, " << largest
+         << " quadrature points in the largest neighbour set, "
+         << static_cast<double>(total) / static_cast<double>(ip_.size()) << " on average" << std::endl;
+  return averaging;
 }
 
 template <int dim>

@@ -26,6 +26,7 @@
 #include "loading/specimen_measures.h"
 #include "parameters/macro_parameters.h"
 #include "materials/material.h"
+#include "nonlocal/nonlocal_operator.h"
 #include "elements/element_formulation.h"
 #include "output_lock.h"
 
@@ -87,7 +88,10 @@ private:
   void prepare_output_directory();
   /// @param checkpoint restore the RVEs from this checkpoint (empty: build and relax them).
   void make_material(const std::string& checkpoint);
-  /// The neo-Hookean law or the RVEs, before the corotational wrapper.
+  /// The operator of subsection Nonlocal on the IPs; nullptr for the local continuum.
+  /// @throws std::runtime_error if the radius reaches no other IP.
+  std::unique_ptr<NonlocalOperator<dim>> make_nonlocal_operator() const;
+  /// The neo-Hookean law or the RVEs, before the corotational and nonlocal wrappers.
   void make_constitutive_material(const std::string& checkpoint);
   void update_stresses();
 
@@ -101,7 +105,7 @@ private:
   void assemble_external_force(double fraction) override;
   Constraints constraints(double fraction) const override;
   void record_energy(double kinetic) override;
-  void commit_corotational() override;
+  void commit_increments() override;
   void stop_if_signalled() const override;
   Material<dim>& material() override { return *material_; }
   const dealii::DoFHandler<dim>& dof_handler() const override { return dof_handler_; }

@@ -217,7 +217,7 @@ void ExplicitSolver<dim>::close_load_step()
   for (IpState<dim>& p : ip_)
   {
     p.F_last_step = p.F;
-    p.commit_corotational();
+    p.commit_increment();
   }
 }
 
@@ -309,11 +309,11 @@ typename ExplicitSolver<dim>::Constraints ExplicitSolver<dim>::constraints(const
 }
 
 template <int dim>
-void ExplicitSolver<dim>::commit_corotational()
+void ExplicitSolver<dim>::commit_increments()
 {
-  if (prm_.elements.corotational)
+  if (prm_.elements.corotational || prm_.nonlocal.active())
     for (IpState<dim>& p : ip_)
-      p.commit_corotational();
+      p.commit_increment();
 }
 
 template <int dim>

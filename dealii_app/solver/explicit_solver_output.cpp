@@ -117,6 +117,13 @@ typename ExplicitSolver<dim>::StepStatistics ExplicitSolver<dim>::gather_step_st
         rec.sigma[dim * i + j] = sigma[i][j];
       }
     rec.statistics = h.statistics;
+    if (prm_.nonlocal.active())
+    {
+      rec.F_nonlocal.emplace();
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          (*rec.F_nonlocal)[dim * i + j] = h.F_nonlocal_trial[i][j];
+    }
   }
   const double n = ip_.size();
   st.ratio_mean = r_sum / n;

@@ -77,8 +77,9 @@ public:
   virtual Constraints constraints(double fraction) const = 0;
   /// Adds the state now to the energy balance with kinetic energy @p kinetic.
   virtual void record_energy(double kinetic) = 0;
-  /// The corotational update commits its rotation increment (a no-op otherwise).
-  virtual void commit_corotational() = 0;
+  /// The time step's increments become the committed ones, where the material is driven by
+  /// increments per time step (corotational update, nonlocal operator; a no-op otherwise).
+  virtual void commit_increments() = 0;
   /// Throws the solver's stop exception if a stop signal arrived on any rank (collective).
   virtual void stop_if_signalled() const = 0;
   virtual Material<dim>& material() = 0;

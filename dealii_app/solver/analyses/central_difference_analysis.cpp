@@ -222,7 +222,7 @@ typename Analysis<dim>::StepResult CentralDifferenceAnalysis<dim>::solve_step(do
     integrator_.correct(x.velocity, x.acceleration, x.f_int, f_int_previous_, x.f_ext, dt, v, a);
     const double kinetic = integrator_.kinetic_energy(x.velocity, x.acceleration, dt);
     system_.record_energy(kinetic);
-    system_.commit_corotational(); // corotational increments per time step
+    system_.commit_increments(); // corotational and nonlocal increments per time step
     time_ = t;
     watch_stability(kinetic);
   }

@@ -53,8 +53,8 @@ EvaluationCost CorotationalMaterial<dim>::evaluate(std::vector<IpState<dim>>& po
   for (std::size_t k = 0; k < points.size(); ++k)
   {
     const IpState<dim>& p = points[k];
-    const Tensor<2, dim> F_mid = 0.5 * (p.F_corotational_base + p.F);
-    const Tensor<2, dim> d_eps = symmetrize((p.F - p.F_corotational_base) * invert(F_mid));
+    const Tensor<2, dim> F_mid = 0.5 * (p.F_committed + p.F);
+    const Tensor<2, dim> d_eps = symmetrize((p.F - p.F_committed) * invert(F_mid));
     const Tensor<2, dim> R_mid = polar_rotation(F_mid);
     const Tensor<2, dim> d_eps_R = transpose(R_mid) * d_eps * R_mid;
     corotational_[k] = p;

@@ -22,7 +22,7 @@
  * Love-Weber stress) are rotated back likewise. For a rigid rotation the
  * midpoint increment d_eps is exactly zero at any step size (Hughes and
  * Winget 1980), so the stress stays zero. F^R_n and F_n are
- * IpState::F_corotational and F_corotational_base (IpState::commit_corotational).
+ * IpState::F_corotational and F_committed (IpState::commit_increment).
  */
 #pragma once
 

@@ -18,7 +18,7 @@
  * continuum: each point alone with weight 1, and the average is its own
  * value, bit for bit.
  *
- * A pure part (issue 37, first piece): the solver does not use it yet.
+ * The solver uses it through NonlocalMaterial (nonlocal_material.h).
  */
 #pragma once
 

@@ -295,6 +295,16 @@ void HistoryWriter::append(int step, double axial_strain, const std::vector<IpRe
     else
       columns(name, unit, description, std::is_same_v<T, double> ? 0 : n, 0.0);
   });
+  if (n_ip_ > 0 && ips[0].F_nonlocal)
+  {
+    std::vector<double> v(n * n_ip_);
+    for (std::size_t p = 0; p < n_ip_; ++p)
+      std::copy(ips[p].F_nonlocal->begin(), ips[p].F_nonlocal->end(), &v[n * p]);
+    create_once("F_nonlocal", H5T_NATIVE_DOUBLE, n, "1",
+                "the F that drove the material: its committed value plus the staggered average of "
+                "the increments within the interaction radius (subsection Nonlocal), row-major");
+    check(append_row(file_, "F_nonlocal", H5T_NATIVE_DOUBLE, n_steps_, v.data()), "appending a row");
+  }
   ++n_steps_;
   check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flushing");
 }

@@ -10,7 +10,9 @@
  * (row-major 11 12 21 22, in 3D 11 12 13 21 ... 33; sigma is the macro Cauchy
  * stress P F^T / J; stresses in N/m in 2D, Pa in 3D),
  * then one dataset per statistic under its name: tensors
- * [s][n_ip][dim*dim], scalars [s][n_ip] (double), counts [s][n_ip] (long).
+ * [s][n_ip][dim*dim], scalars [s][n_ip] (double), counts [s][n_ip] (long);
+ * with the nonlocal operator also /F_nonlocal [s][n_ip][dim*dim], the
+ * averaged F that drove the material (nonlocal_material.h).
  * Every dataset has the string attributes `unit` and `description`; the
  * root group has string attributes describing the run (describe_run():
  * program, version and commit, date, parameter file and its text, tensor
@@ -21,6 +23,7 @@
 #include "rve_statistics.h"
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +35,8 @@ struct IpRecord
 {
   std::array<double, dim * dim> F{}, P{}, sigma{};
   RveStatistics<dim> statistics;
+  /// The averaged F the material saw (subsection Nonlocal; dataset /F_nonlocal), only with the operator.
+  std::optional<std::array<double, dim * dim>> F_nonlocal;
 };
 
 class HistoryWriter

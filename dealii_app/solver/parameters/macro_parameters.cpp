@@ -583,6 +583,7 @@ void Parameters::declare_parameters(dealii::ParameterHandler& prm)
   Geometry::declare_parameters(prm);
   MaterialParameters::declare_parameters(prm);
   FiniteElements::declare_parameters(prm);
+  Nonlocal::declare_parameters(prm);
   DynamicRelaxation::declare_parameters(prm);
   Dynamics::declare_parameters(prm);
   Loading::declare_parameters(prm);
@@ -606,6 +607,7 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
   geometry.parse_parameters(prm, base.string());
   material.parse_parameters(prm);
   elements.parse_parameters(prm);
+  nonlocal.parse_parameters(prm);
   relaxation.parse_parameters(prm);
   dynamics.parse_parameters(prm);
   dynamics.resolve_scheme(material.type == MaterialParameters::Type::rve);

@@ -80,6 +80,24 @@ struct FiniteElements
   void parse_parameters(dealii::ParameterHandler& prm);
 };
 
+/**
+ * subsection Nonlocal: the staggered nonlocal operator of physics.md 1.5
+ * ([LSYF] 2.3.3; nonlocal/nonlocal_material.h). The strain increment that
+ * drives each IP's material is the bell-weighted average of the increments
+ * of the IPs within 'Interaction radius' of it, so that a shear band cannot
+ * narrow below a width set by the radius instead of by the mesh.
+ */
+struct Nonlocal
+{
+  double radius; ///< interaction radius R (m, reference configuration); 0: local
+  /// The neighbours' increments at n+alpha: (1 - alpha) x their last committed
+  /// increment + alpha x their current one; the point's own is always current.
+  double alpha;
+  bool active() const { return radius > 0.0; }
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm);
+};
+
 /// subsection Dynamic relaxation: physics.md (M3)-(M9).
 struct DynamicRelaxation
 {
@@ -247,6 +265,7 @@ struct Parameters
   Geometry geometry;
   MaterialParameters material;
   FiniteElements elements;
+  Nonlocal nonlocal;
   DynamicRelaxation relaxation;
   Dynamics dynamics;
   Loading loading;

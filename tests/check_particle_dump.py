@@ -2,20 +2,24 @@
 """Checks the particle dumps of fe2dem against its history.h5.
 
 Usage: check_particle_dump.py OUTPUT_DIR IP STEP [OTHER_OUTPUT_DIR]
-For IP at load STEP: the dump files exist and parse, every contact joins two
+       check_particle_dump.py OUTPUT_DIR rve ROW    (fe2dem-rve: 'Particle dumps every')
+For IP at load STEP (or fe2dem-rve's row ROW of rve.csv): the dump files exist and parse, every contact joins two
 listed particles at their listed centres, fn > 0 (the dump lists touching
 pairs, which carry compression), and 2 C / N equals the coordination in
 history.h5 (same contact count; N counts each physical particle once: the
-inner particles, one per edge pair of frame images and one corner). With OTHER_OUTPUT_DIR the files must be
+inner particles, one per edge pair of frame images and one corner), or the
+coordination of rve.csv at that row. With OTHER_OUTPUT_DIR the files must be
 byte-identical there (rank-count independence).
 """
+import csv
 import filecmp
 import sys
 
 import h5py
 
-out, ip, step = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
-prefix = f"{out}/particles/ip{ip:04d}-step{step:04d}"
+out, single_rve, step = sys.argv[1], sys.argv[2] == "rve", int(sys.argv[3])
+ip = 0 if single_rve else int(sys.argv[2])
+prefix = f"{out}/particles/step{step:04d}" if single_rve else f"{out}/particles/ip{ip:04d}-step{step:04d}"
 failures = []
 
 
@@ -41,16 +45,21 @@ for c in contacts:
             failures.append(f"contact {int(c['id1'])}-{int(c['id2'])}: end {k} not at its particle")
     if not c["fn"] > 0:
         failures.append(f"contact {int(c['id1'])}-{int(c['id2'])}: fn = {c['fn']} not > 0")
-with h5py.File(f"{out}/history.h5", "r") as h:
-    row = list(h["step"][:]).index(step)
-    coordination = h["coordination"][row, ip]
+if single_rve:
+    coordination = float(next(r for r in csv.DictReader(open(f"{out}/rve.csv")) if int(r["step"]) == step)
+                         ["coordination"])
+else:
+    with h5py.File(f"{out}/history.h5", "r") as h:
+        row = list(h["step"][:]).index(step)
+        coordination = h["coordination"][row, ip]
 n_frame = round(sum(p["frame"] for p in particles.values()))
 n_physical = len(particles) - n_frame + (n_frame - 4) // 2 + 1
 z = 2.0 * len(contacts) / n_physical
 print(f"{prefix}: {len(particles)} particles ({n_frame} frame, {n_physical} physical), "
-      f"{len(contacts)} contacts, 2C/N = {z:.6f}, history.h5 coordination = {coordination:.6f}")
-if abs(z - coordination) > 1e-12:
-    failures.append(f"2C/N = {z} differs from history.h5 coordination {coordination}")
+      f"{len(contacts)} contacts, 2C/N = {z:.6f}, {'rve.csv' if single_rve else 'history.h5'} "
+      f"coordination = {coordination:.6f}")
+if abs(z - coordination) > (1e-9 if single_rve else 1e-12):  # rve.csv prints 12 digits
+    failures.append(f"2C/N = {z} differs from the coordination {coordination}")
 if len(sys.argv) > 4:
     for ext in (".particles", ".contacts"):
         other = f"{sys.argv[4]}/particles/ip{ip:04d}-step{step:04d}{ext}"

@@ -5,6 +5,11 @@
 #   mesh_1x1 mesh_1x2 mesh_2x4 mesh_4x8   mesh convergence (mesh_2x4 is also
 #                                         the reference of every study:
 #                                         friction 0.4, free rotation, lbs_ref)
+#   mesh_8x16                             the finest local mesh (512 RVEs, about
+#                                         half an hour on 2 cores; not in 'all')
+#   nonlocal_1x1 ... nonlocal_4x8,        the meshes with the nonlocal operator,
+#   nonlocal_8x16                         R = 2.5 mm (README, "Nonlocal"; 8x16
+#                                         not in 'all')
 #   mesh_4x8_steps22                      4x8 with stage 2 in 0.25 % steps to
 #                                         5.5 % (load-step check of the peak)
 #   dns_A dns_B                           direct numerical simulations
@@ -32,7 +37,8 @@ root="$(cd "$here/../.." && pwd)"
 source "$root/benchmarks/common.sh"
 build="$root/build" np=2 mts20=0
 all_cases=(mesh_1x1 mesh_1x2 mesh_2x4 mesh_4x8 mesh_4x8_steps22 dns_A dns_B dns_B_tol1e-3 dns_B_tol1e-4
-           mu0.2 mu0.6 locked a005 a008)
+           mu0.2 mu0.6 locked a005 a008 nonlocal_1x1 nonlocal_1x2 nonlocal_2x4 nonlocal_4x8)
+extra_cases=(mesh_8x16 nonlocal_8x16)
 
 usage() { sed -n '4,23p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 2; }
 cases=()
@@ -44,7 +50,8 @@ while [[ $# -gt 0 ]]; do
     --mts20) mts20=1; shift ;;
     all) cases+=("${all_cases[@]}"); shift ;;
     -h|--help) usage ;;
-    *) [[ " ${all_cases[*]} " == *" $1 "* ]] || { echo "run.sh: unknown case '$1' (cases: ${all_cases[*]} all)" >&2; exit 2; }
+    *) [[ " ${all_cases[*]} ${extra_cases[*]} " == *" $1 "* ]] ||
+         { echo "run.sh: unknown case '$1' (cases: ${all_cases[*]} ${extra_cases[*]} all)" >&2; exit 2; }
        cases+=("$1"); shift ;;
   esac
 done
@@ -62,14 +69,16 @@ mkdir -p "$runs" "$results"
 overrides() {
   local cells
   case "$1" in
-    mesh_*)
-      cells=${1#mesh_}; cells=${cells%%_*}
+    mesh_*|nonlocal_*)
+      cells=${1#*_}; cells=${cells%%_*}
       printf 'subsection Geometry\n  set Cells x = %s\n  set Cells y = %s\nend\n' "${cells%x*}" "${cells#*x}"
       [[ $1 != *_steps22 ]] || printf 'subsection Loading\n  set Load steps = 22\n  set Axial strain = 0.055\nend\n' ;;
     mu*) printf 'subsection RVE\n  set Friction = %s\nend\n' "${1#mu}" ;;
     locked) printf 'subsection RVE\n  set Rotation = locked\nend\n' ;;
     a005|a008) printf 'subsection RVE\n  set Packing = ../../rve_templates/packings/lbs_%s\nend\n' "$1" ;;
   esac
+  # 2R = 5 mm, the side of one RVE (README, "Nonlocal": why not the DNS band width)
+  [[ $1 != nonlocal_* ]] || printf 'subsection Nonlocal\n  set Interaction radius = 0.0025\nend\n'
   # Particles and contact forces of every IP at 9 % axial strain (step 10 + 18)
   # for the pictures of the highest- and lowest-stress IPs.
   case "$1" in
@@ -92,6 +101,7 @@ mts20_overrides() {
 dns_overrides() {
   case "$1" in
     dns_B_tol*) printf 'subsection RVE\n  set Relaxation tolerance = %s\nend\n' "${1#dns_B_tol}" ;;
+    dns_B) printf 'set Particle dumps every = 2\n' ;; # the band width (band_width.py)
   esac
 }
 

@@ -144,6 +144,11 @@ void Parameters::declare_parameters(dealii::ParameterHandler& prm)
 {
   prm.declare_entry("Output directory", "output", Anything(),
                     "Directory for rve.csv (created; relative to the parameter file).");
+  prm.declare_entry("Particle dumps every", "0", Integer(0),
+                    "N > 0: after every N-th row of rve.csv (the row number divisible by N) the "
+                    "particles and contacts of the RVE go to <Output directory>/particles/"
+                    "stepNNNN.{particles,contacts} (coupler/particle_dump.h: LIGGGHTS dump text, "
+                    "with particle ids; scripts/plot_particles.py). 0: none.");
   RveParameters::declare_parameters(prm);
   PathParameters::declare_parameters(prm);
 }
@@ -194,6 +199,7 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
     std::cerr << "fe2dem-rve: warning: " << w << std::endl;
   prm.parse_input(file); // throws deal.II's message naming the line on unknown entries
   output_directory = resolve_path(base, prm.get("Output directory"));
+  particle_dumps_every = prm.get_integer("Particle dumps every");
   rve.parse_parameters(prm, base);
   rve.resolve_inner_start(/*explicit_dynamics=*/false); // fe2dem-rve's paths are quasi-static
   path.parse_parameters(prm, base);

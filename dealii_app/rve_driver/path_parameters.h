@@ -46,6 +46,8 @@ struct PathParameters
 struct Parameters
 {
   std::string output_directory;
+  /// Particle pictures after every this many rows of rve.csv (0: none).
+  unsigned int particle_dumps_every = 0;
   RveParameters rve;
   PathParameters path;
 

@@ -114,6 +114,13 @@ void RvePathRunner<dim>::write_row(const Response& r, unsigned int stress_iterat
        << ',' << membrane_steps_in_step_ << ',' << s.fabric_deviator << ',' << drive_time_ << ','
        << control_error_ << '\n';
   csv_.flush();
+  if (prm_.particle_dumps_every > 0 && step_ % prm_.particle_dumps_every == 0)
+  {
+    std::ostringstream prefix;
+    prefix << prm_.output_directory << "/particles/step" << std::setw(4) << std::setfill('0') << step_;
+    std::filesystem::create_directories(prm_.output_directory + "/particles");
+    rve_->write_particles(prefix.str(), step_);
+  }
   const char* axial_name = axial == 8 ? "33" : "22";
   std::cout << "step " << std::setw(3) << step_ << "  F11 " << std::setw(9) << r.F[0] << "  F"
             << axial_name << " " << std::setw(9) << r.F[axial] << "  F12 " << std::setw(9) << r.F[1]

@@ -88,8 +88,8 @@ private:
   void prepare_output_directory();
   /// @param checkpoint restore the RVEs from this checkpoint (empty: build and relax them).
   void make_material(const std::string& checkpoint);
-  /// The operator of subsection Nonlocal on the IPs; nullptr for the local continuum.
-  /// @throws std::runtime_error if the radius reaches no other IP.
+  /// The operator of subsection Nonlocal on the IPs; nullptr for the local continuum
+  /// (a warning if the radius reaches no other IP).
   std::unique_ptr<NonlocalOperator<dim>> make_nonlocal_operator() const;
   /// The neo-Hookean law or the RVEs, before the corotational and nonlocal wrappers.
   void make_constitutive_material(const std::string& checkpoint);

@@ -1,0 +1,179 @@
+#!/usr/bin/python3
+"""The [LBS] biaxial test local against nonlocal (issue 37): the meshes'
+spread after the peak, the shear-band width on each mesh and in DNS B, maps
+of the strain increment after the peak.
+
+Usage: nonlocal_study.py [DIR]   (Debian's python3 with numpy, matplotlib, h5py)
+
+Reads runs/{mesh,nonlocal}_{1x1,1x2,2x4,4x8,8x16}/ and runs/dns_B/particles/
+(run.sh), writes into results/:
+  nonlocal_curves.png         stress ratio against axial strain, both families
+  nonlocal_spread.csv         per step from the peak to 10 %: (max - min)/mean
+                              of the stress ratio over the meshes, local and nonlocal
+  nonlocal_band_width.csv     band width (band_width.py) per case and in DNS B
+  nonlocal_bands.png          shear strain increment from 7.5 to 10 % per IP
+and prints the tables of the README. The band is measured over the same
+interval in every run, 7.5 % to 10 % axial strain (after every mesh's peak).
+"""
+import csv
+import os
+import sys
+
+import h5py
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import analyse  # noqa: E402  (curve(), run_info(): the same reading as the study's)
+import band_width as bw  # noqa: E402
+
+runs, results = analyse.runs, analyse.results
+MESHES = ["1x1", "1x2", "2x4", "4x8", "8x16"]
+BAND_FROM, BAND_TO = 0.075, 0.10   # axial strain interval of the band measurement
+RADIUS = 2.5e-3                    # run.sh: Interaction radius of the nonlocal_* cases
+DNS_DUMP_EVERY = 2                 # run.sh: Particle dumps every of dns_B
+
+
+def rows_at(case, strains):
+    """history.h5 rows of stage 2 at the given axial strains."""
+    with h5py.File(os.path.join(runs, case, "history.h5"), "r") as h:
+        a = h["axial_strain"][()]
+    return [int(np.argmin(np.abs(a - s) + (a == 0) * 1.0)) for s in strains]
+
+
+def spread_after_peak(curves, cases):
+    """[(axial strain, (max - min)/mean)] over `cases` from the peak of their mean to the end."""
+    have = [c for c in cases if curves.get(c)]
+    if len(have) < 2:
+        return [], have
+    n = min(len(curves[c]["stress_ratio"]) for c in have)
+    r = np.array([curves[c]["stress_ratio"][:n] for c in have])
+    eps = np.array(curves[have[0]]["axial_strain"][:n])
+    peak = int(np.argmax(r.mean(axis=0)))
+    s = (r.max(axis=0) - r.min(axis=0)) / r.mean(axis=0)
+    return [(eps[k], s[k]) for k in range(peak, n)], have
+
+
+def dns_band():
+    """(points, gamma, width, angle) of DNS B from 7.5 % to 10 % (rows 10 + 15 and 10 + 20)."""
+    rows = [analyse.ISO_STEPS + round(e / 0.005) for e in (BAND_FROM, BAND_TO)]
+    paths = [os.path.join(runs, "dns_B", "particles", f"step{r:04d}.particles") for r in rows]
+    if not all(os.path.exists(p) for p in paths):
+        return None
+    pts, g = bw.particle_field(*paths)
+    w, ang, _ = bw.band_width(pts, g)
+    return pts, g, w, ang
+
+
+def main():
+    os.makedirs(results, exist_ok=True)
+    info = analyse.run_info()
+    families = {"local": [f"mesh_{m}" for m in MESHES], "nonlocal": [f"nonlocal_{m}" for m in MESHES]}
+    curves = {c: analyse.curve(c) if c in info else None for f in families.values() for c in f}
+
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for fam, style in (("local", "--"), ("nonlocal", "-")):
+        for k, c in enumerate(families[fam]):
+            if curves[c]:
+                ax.plot(100 * np.array(curves[c]["axial_strain"]), curves[c]["stress_ratio"], style,
+                        color=f"C{k}", label=f"{fam} {c.split('_')[1]}")
+    ax.set_xlabel("axial strain (%)")
+    ax.set_ylabel("average stress ratio")
+    ax.set_title(f"[LBS] biaxial test: local (dashed) and nonlocal R = {RADIUS * 1e3:g} mm (solid)")
+    ax.legend(fontsize=7, ncol=2)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(results, "nonlocal_curves.png"), dpi=120)
+
+    # spread over the meshes able to hold a band (2x4 and finer) and over all
+    table = {}
+    with open(os.path.join(results, "nonlocal_spread.csv"), "w") as fh:
+        fh.write("meshes,family,axial_strain,spread\n")
+        for label, meshes in (("2x4-and-finer", MESHES[2:]), ("all", MESHES)):
+            for fam in families:
+                prefix = "mesh" if fam == "local" else "nonlocal"
+                pts, have = spread_after_peak(curves, [f"{prefix}_{m}" for m in meshes])
+                for e, s in pts:
+                    fh.write(f"{label},{fam},{e:.6g},{s:.6g}\n")
+                table[(label, fam)] = (pts, have)
+    print("\n| meshes | family | cases | peak of the mean at | spread from it to 10 %: mean | max |\n"
+          "| --- | --- | --- | --- | --- | --- |")
+    for (label, fam), (pts, have) in table.items():
+        if pts:
+            s = np.array([p[1] for p in pts])
+            print(f"| {label} | {fam} | {' '.join(c.split('_')[1] for c in have)} | {100 * pts[0][0]:.1f} % "
+                  f"| {100 * s.mean():.1f} % | {100 * s.max():.1f} % |")
+
+    # band widths
+    widths = []
+    for fam, cases in families.items():
+        for c in cases:
+            if not curves[c]:
+                continue
+            r0, r1 = rows_at(c, (BAND_FROM, BAND_TO))
+            pts, g = bw.ip_field(os.path.join(runs, c, "history.h5"), r0, r1)
+            cells = c.split("_")[1].split("x")
+            h = 10.0 / int(cells[0])
+            w, ang, _ = bw.band_width(pts, g) if len(pts) >= 32 else (np.nan, np.nan, None)
+            widths.append((c, fam, h, w, ang, pts, g))
+    dns = dns_band()
+    with open(os.path.join(results, "nonlocal_band_width.csv"), "w") as fh:
+        fh.write("case,family,element_size_mm,band_width_mm,band_angle_deg\n")
+        for c, fam, h, w, ang, _, _ in widths:
+            fh.write(f"{c},{fam},{h:g},{w * 1e3:.3g},{ang:.0f}\n")
+        if dns:
+            fh.write(f"dns_B,DNS,,{dns[2] * 1e3:.3g},{dns[3]:.0f}\n")
+    print("\n| case | element size | band width (7.5-10 %) | band direction |\n| --- | --- | --- | --- |")
+    for c, fam, h, w, ang, _, _ in widths:
+        print(f"| {c} | {h:g} mm | " + ("no band (fewer than 32 IPs)" if np.isnan(w) else f"{w * 1e3:.2f} mm")
+              + f" | {'' if np.isnan(ang) else f'{ang:.0f} deg'} |")
+    if dns:
+        print(f"| dns_B (particles) | - | {dns[2] * 1e3:.2f} mm | {dns[3]:.0f} deg |")
+
+    shown = [x for x in widths if not np.isnan(x[3])]
+    if shown:
+        cols = sorted({x[0].split("_")[1] for x in shown}, key=MESHES.index)
+        fig, axs = plt.subplots(2, len(cols) + (dns is not None), figsize=(2.4 * (len(cols) + 1), 8),
+                                squeeze=False)
+        for row, fam in enumerate(families):
+            for col, m in enumerate(cols):
+                a = axs[row][col]
+                hit = [x for x in shown if x[1] == fam and x[0].endswith("_" + m)]
+                if not hit:
+                    a.axis("off")
+                    continue
+                c, _, h, w, ang, pts, g = hit[0]
+                sc = a.scatter(1e3 * pts[:, 0], 1e3 * pts[:, 1], c=g, s=2400 / len(pts) ** 0.9 + 4,
+                               marker="s", cmap="viridis")
+                a.set_title(f"{fam} {m}\nband {w * 1e3:.1f} mm", fontsize=8)
+                a.set_aspect("equal")
+                a.set_xlim(0, 10)
+                a.set_ylim(0, 20)
+                fig.colorbar(sc, ax=a, shrink=0.6)
+            if dns is not None:
+                a = axs[row][-1]
+                if row == 0:
+                    pts, g, w, ang = dns
+                    sc = a.scatter(1e3 * pts[:, 0], 1e3 * pts[:, 1], c=g, s=6, marker="s", cmap="viridis")
+                    a.set_title(f"DNS B particles\nband {w * 1e3:.1f} mm", fontsize=8)
+                    a.set_aspect("equal")
+                    fig.colorbar(sc, ax=a, shrink=0.6)
+                else:
+                    a.axis("off")
+        fig.suptitle("shear strain increment from 7.5 % to 10 % axial strain (reference positions, mm)",
+                     fontsize=9)
+        fig.tight_layout()
+        fig.savefig(os.path.join(results, "nonlocal_bands.png"), dpi=110)
+
+    print("\n| case | cores | wall | DEM steps |\n| --- | --- | --- | --- |")
+    for fam, cases in families.items():
+        for c in cases:
+            if curves[c]:
+                k = analyse.cost(c, info)
+                print(f"| {c} | {k['cores']} | {k['wall_s']} s | {k['dem_steps']:,} |")
+
+
+if __name__ == "__main__":
+    main()

@@ -33,8 +33,10 @@ namespace
 //    contacts, max_overlap, fabric_deviator, membrane_steps, F_check_error);
 // 7: stages numbered by the load case (a one-stage case's stage is 1, was
 //    2), /load_case_state, and the measures' reference
-//    loading_start_u_top/height (were u_top_ic, h_ic).
-constexpr int format_version = 7;
+//    loading_start_u_top/height (were u_top_ic, h_ic);
+// 8: the IP state with the committed F, the nonlocal F and the committed
+//    increment (nonlocal_material.h), in that order after F_last_step.
+constexpr int format_version = 8;
 
 void check(herr_t status, const std::string& what, const std::string& file)
 {

@@ -1,30 +1,33 @@
 #!/usr/bin/python3
 """The nonlocal F that drove each IP's material (history.h5 /F_nonlocal) is
-the bell-weighted average of the local F over the IPs within R, recomputed
+the weighted average (Wendland's or the bell weight) of the local F over the
+IPs within R, recomputed
 here by brute force from /ip_position (independent of the solver's R-tree).
 With alpha = 1 and fixed weights the incremental rule of
 nonlocal_material.h sums to that total average: Fbar_I = sum_J a*_IJ F_J.
 Also requires that the averaging changed F somewhere (the wiring acts).
 Debian's python3 with python3-h5py.
-Usage: check_nonlocal_average.py HISTORY_H5 RADIUS [TOLERANCE=1e-12]"""
+Usage: check_nonlocal_average.py HISTORY_H5 RADIUS [WEIGHT=wendland|bell] [TOLERANCE=1e-12]"""
 import sys
 
 import h5py
 import numpy as np
 
 path, radius = sys.argv[1], float(sys.argv[2])
-tol = float(sys.argv[3]) if len(sys.argv) > 3 else 1e-12
+weight = sys.argv[3] if len(sys.argv) > 3 else "wendland"
+tol = float(sys.argv[4]) if len(sys.argv) > 4 else 1e-12
 h = h5py.File(path, "r")
 x = h["ip_position"][()]
 F, Fbar = h["F"][()], h["F_nonlocal"][()]
 r = np.linalg.norm(x[:, None, :] - x[None, :, :], axis=2)
-a = np.where(r <= radius, (1.0 - (r / radius) ** 2) ** 2, 0.0)
+s = np.minimum(r / radius, 1.0)
+a = np.where(r <= radius, (1.0 - s) ** 4 * (4.0 * s + 1.0) if weight == "wendland" else (1.0 - s ** 2) ** 2, 0.0)
 a /= a.sum(axis=1, keepdims=True)
 sizes = (r <= radius).sum(axis=1)
 expected = np.einsum("ij,sjk->sik", a, F)
 error = np.abs(Fbar - expected).max()
 change = np.abs(Fbar - F).max()
-print(f"{x.shape[0]} IPs, {F.shape[0]} steps, neighbour sets {sizes.min()}-{sizes.max()}: "
+print(f"{weight}: {x.shape[0]} IPs, {F.shape[0]} steps, neighbour sets {sizes.min()}-{sizes.max()}: "
       f"max |Fbar - sum a F| = {error:.3e} (tolerance {tol:g}), max |Fbar - F| = {change:.3e}")
 ok = error <= tol and change > 100 * tol and sizes.max() > 1
 sys.exit(0 if ok else 1)

@@ -70,6 +70,8 @@ set(FE2DEM_LONG_RUNS
   rve_never_relaxed_names_the_fix rve_never_relaxed_continuous_gets_past
   rve_timed_hold_is_equilibrium
   macro_corotational_vs_total_lagrangian_3d macro_ramp_elastic_block_3d
+  # the nonlocal patch test on a fine mesh (the coarse 2D and 3D ones stay)
+  macro_nonlocal_fine_patch_test_2d
   # restart variants of one guarantee (kill/resume, SIGTERM stay)
   shm_images_removed restart_dynamics_kill_np1_resume_np2
   restart_damaged_checkpoint_truncated restart_damaged_checkpoint_corrupted

@@ -7,7 +7,8 @@ gamma = sqrt((e11 - e22)^2 + (2 e12)^2) of the symmetric part of the
 displacement-increment gradient between two load steps; its band is
 averaged in bins of the distance d along a normal (bin width `bin`,
 default 0.5 mm or half the points' spacing); the band's normal is the one
-of 180 directions whose profile has the highest peak, and the width is the
+of 180 directions whose bin means explain the largest share of the
+variance of gamma (the bins then run along the band), and the width is the
 full width at half maximum of that profile, the two crossings of half its
 peak found by linear interpolation between bins. Distances are in the configuration at the first of the two
 steps for particles, and in the reference configuration for IPs (history.h5
@@ -30,13 +31,14 @@ def shear_strain(grad):
     return np.sqrt((e[:, 0, 0] - e[:, 1, 1]) ** 2 + (2.0 * e[:, 0, 1]) ** 2)
 
 
-def ip_field(history, step0, step1):
+def ip_field(history, step0, step1, dataset="F"):
     """(reference positions [n, 2], gamma [n]) of the IPs between two rows of history.h5:
-    the increment of F over the steps in the configuration of step0, dF F0^-1."""
+    the increment of `dataset` (F, or F_nonlocal: the F the RVEs saw) over the steps in the
+    configuration of step0, dF F0^-1."""
     import h5py
     with h5py.File(history, "r") as h:
         x = h["ip_position"][()]
-        F = h["F"][()].reshape(len(h["step"]), -1, 2, 2)
+        F = h[dataset][()].reshape(len(h["step"]), -1, 2, 2)
     grad = np.einsum("nij,njk->nik", F[step1] - F[step0], np.linalg.inv(F[step0]))
     return x, shear_strain(grad)
 
@@ -75,20 +77,24 @@ def particle_field(dump0, dump1, spacing=0.5e-3, radius=1.0e-3):
 
 
 def profile(points, gamma, normal, bin):
-    """(bin centres d, mean gamma) of the points binned by d = normal . x (bins with >= 2 points)."""
+    """(bin centres d, mean gamma, share of the variance of gamma the bin means explain) of the
+    points binned by d = normal . x (bins with >= 2 points)."""
     d = points @ normal
     edges = np.arange(d.min() - bin / 2, d.max() + bin, bin)
     which = np.digitize(d, edges) - 1
-    counts = np.bincount(which, minlength=len(edges))
-    sums = np.bincount(which, weights=gamma, minlength=len(edges))
+    counts = np.bincount(which, minlength=len(edges))[:-1]
+    sums = np.bincount(which, weights=gamma, minlength=len(edges))[:-1]
+    means = sums / np.maximum(counts, 1)
+    explained = (counts * (means - gamma.mean()) ** 2).sum() / max(((gamma - gamma.mean()) ** 2).sum(), 1e-300)
     keep = counts >= 2
-    return (0.5 * (edges[:-1] + edges[1:]))[keep[:-1]], (sums / np.maximum(counts, 1))[:-1][keep[:-1]]
+    return (0.5 * (edges[:-1] + edges[1:]))[keep], means[keep], explained
 
 
 def band_width(points, gamma, bin=None):
     """(width, band direction in degrees from x, profile (d, mean gamma)) of the
     band of `gamma`: over the directions 0, 1, ... 179 degrees, the normal whose
-    profile has the highest peak is the band's; the width is that profile's
+    profile explains the largest share of the variance of gamma is the band's
+    (the bins then run along the band); the width is that profile's
     full width at half maximum (NaN without two crossings). `bin` defaults to
     max(0.5 mm, half the median nearest-neighbour spacing of the points)."""
     if bin is None:
@@ -98,9 +104,9 @@ def band_width(points, gamma, bin=None):
     best = None
     for deg in range(180):
         normal = np.array([np.cos(np.radians(deg)), np.sin(np.radians(deg))])
-        centres, means = profile(points, gamma, normal, bin)
-        if best is None or means.max() > best[0]:
-            best = (means.max(), deg, centres, means)
+        centres, means, explained = profile(points, gamma, normal, bin)
+        if best is None or explained > best[0]:
+            best = (explained, deg, centres, means)
     _, deg, centres, means = best
     k = int(np.argmax(means))
     half = 0.5 * means[k]

@@ -11,9 +11,11 @@ Reads runs/{mesh,nonlocal}_{1x1,1x2,2x4,4x8,8x16}/ and runs/dns_B/particles/
   nonlocal_spread.csv         per step from the peak to 10 %: (max - min)/mean
                               of the stress ratio over the meshes, local and nonlocal
   nonlocal_band_width.csv     band width (band_width.py) per case and in DNS B
-  nonlocal_bands.png          shear strain increment from 7.5 to 10 % per IP
-and prints the tables of the README. The band is measured over the same
-interval in every run, 7.5 % to 10 % axial strain (after every mesh's peak).
+  nonlocal_bands.png          shear strain increment of the last step per IP
+and prints the tables of the README. The band is measured on the increment
+of the last load step (9.5 to 10 % axial strain, or the last step a run
+reached): bands move after the peak, and over several steps the increments
+of successive bands add up. DNS B: its dumps at 9 and 10 %.
 """
 import csv
 import os
@@ -31,7 +33,7 @@ import band_width as bw  # noqa: E402
 
 runs, results = analyse.runs, analyse.results
 MESHES = ["1x1", "1x2", "2x4", "4x8", "8x16"]
-BAND_FROM, BAND_TO = 0.075, 0.10   # axial strain interval of the band measurement
+BAND_FROM, BAND_TO = 0.09, 0.10    # DNS B: the dumps around the last step (every second row)
 RADIUS = 2.5e-3                    # run.sh: Interaction radius of the nonlocal_* cases
 DNS_DUMP_EVERY = 2                 # run.sh: Particle dumps every of dns_B
 
@@ -57,7 +59,7 @@ def spread_after_peak(curves, cases):
 
 
 def dns_band():
-    """(points, gamma, width, angle) of DNS B from 7.5 % to 10 % (rows 10 + 15 and 10 + 20)."""
+    """(points, gamma, width, angle) of DNS B from 9 % to 10 % (rows 10 + 18 and 10 + 20)."""
     rows = [analyse.ISO_STEPS + round(e / 0.005) for e in (BAND_FROM, BAND_TO)]
     paths = [os.path.join(runs, "dns_B", "particles", f"step{r:04d}.particles") for r in rows]
     if not all(os.path.exists(p) for p in paths):
@@ -106,33 +108,40 @@ def main():
             print(f"| {label} | {fam} | {' '.join(c.split('_')[1] for c in have)} | {100 * pts[0][0]:.1f} % "
                   f"| {100 * s.mean():.1f} % | {100 * s.max():.1f} % |")
 
-    # band widths
+    # band widths: the last load step's increment (bands move: over several steps the
+    # increments of different bands add up), of F and, with the operator, of the F the RVEs saw
     widths = []
     for fam, cases in families.items():
         for c in cases:
-            if not curves[c]:
+            if not curves[c] or len(curves[c]["axial_strain"]) < 2:
                 continue
-            r0, r1 = rows_at(c, (BAND_FROM, BAND_TO))
-            pts, g = bw.ip_field(os.path.join(runs, c, "history.h5"), r0, r1)
+            path = os.path.join(runs, c, "history.h5")
+            with h5py.File(path, "r") as h:
+                n, end_strain, n_ip = len(h["step"]), h["axial_strain"][-1], h["ip_position"].shape[0]
+                fields = ["F"] + (["F_nonlocal"] if "F_nonlocal" in h else [])
+            if n_ip < 32:
+                continue
             cells = c.split("_")[1].split("x")
-            h = 10.0 / int(cells[0])
-            w, ang, _ = bw.band_width(pts, g) if len(pts) >= 32 else (np.nan, np.nan, None)
-            widths.append((c, fam, h, w, ang, pts, g))
+            for field in fields:
+                pts, g = bw.ip_field(path, n - 2, n - 1, field)
+                w, ang, _ = bw.band_width(pts, g)
+                widths.append((c, fam, field, 10.0 / int(cells[0]), end_strain, w, ang, pts, g))
     dns = dns_band()
     with open(os.path.join(results, "nonlocal_band_width.csv"), "w") as fh:
-        fh.write("case,family,element_size_mm,band_width_mm,band_angle_deg\n")
-        for c, fam, h, w, ang, _, _ in widths:
-            fh.write(f"{c},{fam},{h:g},{w * 1e3:.3g},{ang:.0f}\n")
+        fh.write("case,family,field,element_size_mm,last_step_end_axial_strain,band_width_mm,band_angle_deg\n")
+        for c, fam, field, h, e, w, ang, _, _ in widths:
+            fh.write(f"{c},{fam},{field},{h:g},{e:.4g},{w * 1e3:.3g},{ang:.0f}\n")
         if dns:
-            fh.write(f"dns_B,DNS,,{dns[2] * 1e3:.3g},{dns[3]:.0f}\n")
-    print("\n| case | element size | band width (7.5-10 %) | band direction |\n| --- | --- | --- | --- |")
-    for c, fam, h, w, ang, _, _ in widths:
-        print(f"| {c} | {h:g} mm | " + ("no band (fewer than 32 IPs)" if np.isnan(w) else f"{w * 1e3:.2f} mm")
-              + f" | {'' if np.isnan(ang) else f'{ang:.0f} deg'} |")
+            fh.write(f"dns_B,DNS,particles,,{BAND_TO:g},{dns[2] * 1e3:.3g},{dns[3]:.0f}\n")
+    print("\n| case | field | element size | last step ends at | band width | band direction |\n"
+          "| --- | --- | --- | --- | --- | --- |")
+    for c, fam, field, h, e, w, ang, _, _ in widths:
+        print(f"| {c} | {field} | {h:g} mm | {100 * e:.1f} % | "
+              + ("no two half-maximum crossings" if np.isnan(w) else f"{w * 1e3:.2f} mm") + f" | {ang:.0f} deg |")
     if dns:
-        print(f"| dns_B (particles) | - | {dns[2] * 1e3:.2f} mm | {dns[3]:.0f} deg |")
+        print(f"| dns_B | particles | - | {100 * BAND_TO:g} % | {dns[2] * 1e3:.2f} mm | {dns[3]:.0f} deg |")
 
-    shown = [x for x in widths if not np.isnan(x[3])]
+    shown = [x for x in widths if x[2] == "F"]
     if shown:
         cols = sorted({x[0].split("_")[1] for x in shown}, key=MESHES.index)
         fig, axs = plt.subplots(2, len(cols) + (dns is not None), figsize=(2.4 * (len(cols) + 1), 8),
@@ -144,26 +153,26 @@ def main():
                 if not hit:
                     a.axis("off")
                     continue
-                c, _, h, w, ang, pts, g = hit[0]
+                c, _, _, h, e, w, ang, pts, g = hit[0]
                 sc = a.scatter(1e3 * pts[:, 0], 1e3 * pts[:, 1], c=g, s=2400 / len(pts) ** 0.9 + 4,
                                marker="s", cmap="viridis")
-                a.set_title(f"{fam} {m}\nband {w * 1e3:.1f} mm", fontsize=8)
+                a.set_title(f"{fam} {m}, step to {100 * e:.1f} %\n"
+                            + ("" if np.isnan(w) else f"band {w * 1e3:.1f} mm"), fontsize=8)
                 a.set_aspect("equal")
                 a.set_xlim(0, 10)
                 a.set_ylim(0, 20)
                 fig.colorbar(sc, ax=a, shrink=0.6)
-            if dns is not None:
-                a = axs[row][-1]
-                if row == 0:
-                    pts, g, w, ang = dns
-                    sc = a.scatter(1e3 * pts[:, 0], 1e3 * pts[:, 1], c=g, s=6, marker="s", cmap="viridis")
-                    a.set_title(f"DNS B particles\nband {w * 1e3:.1f} mm", fontsize=8)
-                    a.set_aspect("equal")
-                    fig.colorbar(sc, ax=a, shrink=0.6)
-                else:
-                    a.axis("off")
-        fig.suptitle("shear strain increment from 7.5 % to 10 % axial strain (reference positions, mm)",
-                     fontsize=9)
+            a = axs[row][-1]
+            if dns is not None and row == 0:
+                pts, g, w, ang = dns
+                sc = a.scatter(1e3 * pts[:, 0], 1e3 * pts[:, 1], c=g, s=6, marker="s", cmap="viridis")
+                a.set_title(f"DNS B particles, {100 * BAND_FROM:g}-{100 * BAND_TO:g} %\nband {w * 1e3:.1f} mm",
+                            fontsize=8)
+                a.set_aspect("equal")
+                fig.colorbar(sc, ax=a, shrink=0.6)
+            elif dns is not None:
+                a.axis("off")
+        fig.suptitle("shear strain increment of the last load step (reference positions, mm)", fontsize=9)
         fig.tight_layout()
         fig.savefig(os.path.join(results, "nonlocal_bands.png"), dpi=110)
 

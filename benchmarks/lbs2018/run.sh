@@ -10,6 +10,8 @@
 #   nonlocal_1x1 ... nonlocal_4x8,        the meshes with the nonlocal operator,
 #   nonlocal_8x16                         R = 2.5 mm (README, "Nonlocal"; 8x16
 #                                         not in 'all')
+#   nonlocal_2x4_R5 nonlocal_4x8_R5       R = 5 mm; _a0: Staggering = 0 (not in 'all';
+#   nonlocal_{2x4,4x8}_a0 nonlocal_2x4_R5_a0  README, "Local against nonlocal")
 #   mesh_4x8_steps22                      4x8 with stage 2 in 0.25 % steps to
 #                                         5.5 % (load-step check of the peak)
 #   dns_A dns_B                           direct numerical simulations
@@ -38,7 +40,8 @@ source "$root/benchmarks/common.sh"
 build="$root/build" np=2 mts20=0
 all_cases=(mesh_1x1 mesh_1x2 mesh_2x4 mesh_4x8 mesh_4x8_steps22 dns_A dns_B dns_B_tol1e-3 dns_B_tol1e-4
            mu0.2 mu0.6 locked a005 a008 nonlocal_1x1 nonlocal_1x2 nonlocal_2x4 nonlocal_4x8)
-extra_cases=(mesh_8x16 nonlocal_8x16)
+extra_cases=(mesh_8x16 nonlocal_8x16 nonlocal_2x4_R5 nonlocal_4x8_R5 nonlocal_2x4_a0 nonlocal_4x8_a0
+             nonlocal_2x4_R5_a0)
 
 usage() { sed -n '4,23p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 2; }
 cases=()
@@ -77,8 +80,18 @@ overrides() {
     locked) printf 'subsection RVE\n  set Rotation = locked\nend\n' ;;
     a005|a008) printf 'subsection RVE\n  set Packing = ../../rve_templates/packings/lbs_%s\nend\n' "$1" ;;
   esac
-  # 2R = 5 mm, the side of one RVE (README, "Nonlocal": why not the DNS band width)
-  [[ $1 != nonlocal_* ]] || printf 'subsection Nonlocal\n  set Interaction radius = 0.0025\nend\n'
+  # 2R = 5 mm, the side of one RVE (README, "Local against nonlocal"); nonlocal_MESH_RN: R = N mm
+  # (_aA: Staggering = A)
+  if [[ $1 == nonlocal_* ]]; then
+    local radius=0.0025 alpha=1 part
+    for part in $(tr _ ' ' <<<"${1#nonlocal_*_}"); do
+      case "$part" in
+        R*) radius=$(awk -v r="${part#R}" 'BEGIN {print r / 1000}') ;;
+        a*) alpha=${part#a} ;;
+      esac
+    done
+    printf 'subsection Nonlocal\n  set Interaction radius = %s\n  set Staggering = %s\nend\n' "$radius" "$alpha"
+  fi
   # Particles and contact forces of every IP at 9 % axial strain (step 10 + 18)
   # for the pictures of the highest- and lowest-stress IPs.
   case "$1" in

@@ -218,6 +218,7 @@ private:
   {
     return {&ip_[cell->active_cell_index() * quadrature_.size()], quadrature_.size()};
   }
+  bool nonlocal_ = false; ///< the material is a NonlocalMaterial (subsection Nonlocal, a radius reaching other IPs)
   double h_min_ = 0.0;
   dealii::Point<dim> lo_, hi_; ///< bounding box of the reference mesh
   int rank_ = 0;

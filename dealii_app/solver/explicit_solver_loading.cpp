@@ -311,7 +311,7 @@ typename ExplicitSolver<dim>::Constraints ExplicitSolver<dim>::constraints(const
 template <int dim>
 void ExplicitSolver<dim>::commit_increments()
 {
-  if (prm_.elements.corotational || prm_.nonlocal.active())
+  if (prm_.elements.corotational || nonlocal_)
     for (IpState<dim>& p : ip_)
       p.commit_increment();
 }

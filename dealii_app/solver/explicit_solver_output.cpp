@@ -117,7 +117,7 @@ typename ExplicitSolver<dim>::StepStatistics ExplicitSolver<dim>::gather_step_st
         rec.sigma[dim * i + j] = sigma[i][j];
       }
     rec.statistics = h.statistics;
-    if (prm_.nonlocal.active())
+    if (nonlocal_)
     {
       rec.F_nonlocal.emplace();
       for (unsigned int i = 0; i < dim; ++i)

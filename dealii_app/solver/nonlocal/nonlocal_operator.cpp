@@ -22,7 +22,30 @@ double NonlocalOperator<dim>::bell(const double r, const double R)
 }
 
 template <int dim>
-NonlocalOperator<dim>::NonlocalOperator(const std::vector<dealii::Point<dim>>& points, const double radius)
+double NonlocalOperator<dim>::wendland(const double r, const double R)
+{
+  if (r == 0.0)
+    return 1.0;
+  if (!(r <= R))
+    return 0.0;
+  const double s = r / R, t = 1.0 - s;
+  return t * t * t * t * (4.0 * s + 1.0);
+}
+
+template <int dim>
+double NonlocalOperator<dim>::mean_self_weight() const
+{
+  double sum = 0.0;
+  for (unsigned int i = 0; i < sets_.size(); ++i)
+    for (const Neighbour& n : sets_[i])
+      if (n.index == i)
+        sum += n.weight;
+  return sets_.empty() ? 1.0 : sum / static_cast<double>(sets_.size());
+}
+
+template <int dim>
+NonlocalOperator<dim>::NonlocalOperator(const std::vector<dealii::Point<dim>>& points, const double radius,
+                                        const Weight weight)
   : radius_(radius)
 {
   if (!(radius >= 0.0) || !std::isfinite(radius))
@@ -52,7 +75,10 @@ NonlocalOperator<dim>::NonlocalOperator(const std::vector<dealii::Point<dim>>& p
     std::sort(q.begin(), q.end(), [](const Neighbour& a, const Neighbour& b) { return a.index < b.index; });
     double total = 0.0;
     for (Neighbour& n : q)
-      total += (n.weight = bell(points[i].distance(points[n.index]), radius));
+    {
+      const double r = points[i].distance(points[n.index]);
+      total += (n.weight = weight == Weight::bell ? bell(r, radius) : wendland(r, radius));
+    }
     for (Neighbour& n : q)
       n.weight /= total;
   }

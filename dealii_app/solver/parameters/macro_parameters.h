@@ -90,6 +90,13 @@ struct FiniteElements
 struct Nonlocal
 {
   double radius; ///< interaction radius R (m, reference configuration); 0: local
+  /// The weight function of support R (nonlocal_operator.h): Wendland's positive-definite C2
+  /// function, or [LSYF]'s bell, whose average turns indefinite once R exceeds ~1.3-1.9 IP spacings.
+  enum class Weight
+  {
+    wendland,
+    bell
+  } weight;
   /// The neighbours' increments at n+alpha: (1 - alpha) x their last committed
   /// increment + alpha x their current one; the point's own is always current.
   double alpha;

@@ -34,7 +34,9 @@ import band_width as bw  # noqa: E402
 runs, results = analyse.runs, analyse.results
 MESHES = ["1x1", "1x2", "2x4", "4x8", "8x16"]
 BAND_FROM, BAND_TO = 0.09, 0.10    # DNS B: the dumps around the last step (every second row)
-RADIUS = 2.5e-3                    # run.sh: Interaction radius of the nonlocal_* cases
+FAMILIES = {"local": ("mesh_{}", "local"),                      # case pattern, label
+            "nonlocal R = 2.5 mm": ("nonlocal_{}", "R 2.5"),
+            "nonlocal R = 5 mm": ("nonlocal_{}_R5", "R 5")}
 DNS_DUMP_EVERY = 2                 # run.sh: Particle dumps every of dns_B
 
 
@@ -72,18 +74,18 @@ def dns_band():
 def main():
     os.makedirs(results, exist_ok=True)
     info = analyse.run_info()
-    families = {"local": [f"mesh_{m}" for m in MESHES], "nonlocal": [f"nonlocal_{m}" for m in MESHES]}
+    families = {f: [pattern.format(m) for m in MESHES] for f, (pattern, _) in FAMILIES.items()}
     curves = {c: analyse.curve(c) if c in info else None for f in families.values() for c in f}
 
     fig, ax = plt.subplots(figsize=(7, 4.5))
-    for fam, style in (("local", "--"), ("nonlocal", "-")):
+    for fam, style in zip(families, ("--", "-", ":")):
         for k, c in enumerate(families[fam]):
             if curves[c]:
                 ax.plot(100 * np.array(curves[c]["axial_strain"]), curves[c]["stress_ratio"], style,
-                        color=f"C{k}", label=f"{fam} {c.split('_')[1]}")
+                        color=f"C{k}", label=f"{FAMILIES[fam][1]} {c.split('_')[1]}")
     ax.set_xlabel("axial strain (%)")
     ax.set_ylabel("average stress ratio")
-    ax.set_title(f"[LBS] biaxial test: local (dashed) and nonlocal R = {RADIUS * 1e3:g} mm (solid)")
+    ax.set_title("[LBS] biaxial test: local (dashed), nonlocal R = 2.5 mm (solid), 5 mm (dotted)", fontsize=9)
     ax.legend(fontsize=7, ncol=2)
     ax.grid(alpha=0.3)
     fig.tight_layout()
@@ -95,8 +97,7 @@ def main():
         fh.write("meshes,family,axial_strain,spread\n")
         for label, meshes in (("2x4-and-finer", MESHES[2:]), ("all", MESHES)):
             for fam in families:
-                prefix = "mesh" if fam == "local" else "nonlocal"
-                pts, have = spread_after_peak(curves, [f"{prefix}_{m}" for m in meshes])
+                pts, have = spread_after_peak(curves, [FAMILIES[fam][0].format(m) for m in meshes])
                 for e, s in pts:
                     fh.write(f"{label},{fam},{e:.6g},{s:.6g}\n")
                 table[(label, fam)] = (pts, have)
@@ -144,12 +145,13 @@ def main():
     shown = [x for x in widths if x[2] == "F"]
     if shown:
         cols = sorted({x[0].split("_")[1] for x in shown}, key=MESHES.index)
-        fig, axs = plt.subplots(2, len(cols) + (dns is not None), figsize=(2.4 * (len(cols) + 1), 8),
+        fig, axs = plt.subplots(len(families), len(cols) + (dns is not None),
+                                figsize=(2.4 * (len(cols) + 1), 4 * len(families)),
                                 squeeze=False)
         for row, fam in enumerate(families):
             for col, m in enumerate(cols):
                 a = axs[row][col]
-                hit = [x for x in shown if x[1] == fam and x[0].endswith("_" + m)]
+                hit = [x for x in shown if x[1] == fam and x[0] == FAMILIES[fam][0].format(m)]
                 if not hit:
                     a.axis("off")
                     continue

@@ -5,13 +5,14 @@
 #   mesh_1x1 mesh_1x2 mesh_2x4 mesh_4x8   mesh convergence (mesh_2x4 is also
 #                                         the reference of every study:
 #                                         friction 0.4, free rotation, lbs_ref)
-#   mesh_8x16                             the finest local mesh (512 RVEs, about
-#                                         half an hour on 2 cores; not in 'all')
+#   mesh_8x16                             the finest local mesh (512 RVEs; more
+#                                         than 40 min on 2 cores; not in 'all')
 #   nonlocal_1x1 ... nonlocal_4x8,        the meshes with the nonlocal operator,
-#   nonlocal_8x16                         R = 2.5 mm (README, "Nonlocal"; 8x16
-#                                         not in 'all')
-#   nonlocal_2x4_R5 nonlocal_4x8_R5       R = 5 mm; _a0: Staggering = 0 (not in 'all';
-#   nonlocal_{2x4,4x8}_a0 nonlocal_2x4_R5_a0  README, "Local against nonlocal")
+#   nonlocal_8x16                         R = 2.5 mm (README, "Local against
+#                                         nonlocal"; 8x16 not in 'all')
+#   nonlocal_MESH_RN[_aA]                 R = N mm (and Staggering = A), e.g.
+#                                         nonlocal_4x8_R5 (not in 'all'; README,
+#                                         "Local against nonlocal")
 #   mesh_4x8_steps22                      4x8 with stage 2 in 0.25 % steps to
 #                                         5.5 % (load-step check of the peak)
 #   dns_A dns_B                           direct numerical simulations
@@ -40,10 +41,9 @@ source "$root/benchmarks/common.sh"
 build="$root/build" np=2 mts20=0
 all_cases=(mesh_1x1 mesh_1x2 mesh_2x4 mesh_4x8 mesh_4x8_steps22 dns_A dns_B dns_B_tol1e-3 dns_B_tol1e-4
            mu0.2 mu0.6 locked a005 a008 nonlocal_1x1 nonlocal_1x2 nonlocal_2x4 nonlocal_4x8)
-extra_cases=(mesh_8x16 nonlocal_8x16 nonlocal_2x4_R5 nonlocal_4x8_R5 nonlocal_2x4_a0 nonlocal_4x8_a0
-             nonlocal_2x4_R5_a0)
+extra_cases=(mesh_8x16 nonlocal_8x16 nonlocal_1x2_R5 nonlocal_2x4_R5 nonlocal_4x8_R5)
 
-usage() { sed -n '4,23p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 2; }
+usage() { sed -n '4,/^set -euo/{/^#/p}' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 2; }
 cases=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
@@ -53,7 +53,7 @@ while [[ $# -gt 0 ]]; do
     --mts20) mts20=1; shift ;;
     all) cases+=("${all_cases[@]}"); shift ;;
     -h|--help) usage ;;
-    *) [[ " ${all_cases[*]} ${extra_cases[*]} " == *" $1 "* ]] ||
+    *) [[ " ${all_cases[*]} ${extra_cases[*]} " == *" $1 "* || $1 =~ ^nonlocal_(1x1|1x2|2x4|4x8|8x16)(_R[0-9.]+)?(_a[0-9.]+)?$ ]] ||
          { echo "run.sh: unknown case '$1' (cases: ${all_cases[*]} ${extra_cases[*]} all)" >&2; exit 2; }
        cases+=("$1"); shift ;;
   esac

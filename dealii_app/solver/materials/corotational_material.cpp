@@ -60,7 +60,7 @@ EvaluationCost CorotationalMaterial<dim>::evaluate(std::vector<IpState<dim>>& po
     corotational_[k] = p;
     corotational_[k].F = exponential(d_eps_R) * p.F_corotational;
   }
-  const EvaluationCost cost = inner_->evaluate(corotational_);
+  const EvaluationCost cost = this->inner().evaluate(corotational_);
   for (std::size_t k = 0; k < points.size(); ++k)
   {
     IpState<dim>& p = points[k];

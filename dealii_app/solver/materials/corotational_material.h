@@ -26,7 +26,7 @@
  */
 #pragma once
 
-#include "materials/material.h"
+#include "materials/material_wrapper.h"
 
 #include <deal.II/base/tensor.h>
 
@@ -40,36 +40,15 @@ template <int dim>
 dealii::Tensor<2, dim> polar_rotation(const dealii::Tensor<2, dim>& F);
 
 template <int dim>
-class CorotationalMaterial : public Material<dim>
+class CorotationalMaterial : public MaterialWrapper<dim>
 {
 public:
-  explicit CorotationalMaterial(std::unique_ptr<Material<dim>> inner) : inner_(std::move(inner)) {}
+  using MaterialWrapper<dim>::MaterialWrapper;
 
   /// Sets every point's P (and statistics) and its F_corotational_trial.
   EvaluationCost evaluate(std::vector<IpState<dim>>& points) override;
-  double wave_speed() const override { return inner_->wave_speed(); }
-  /// W(F) of the inner material (objective: W(R U) = W(U)).
-  double strain_energy_density(const dealii::Tensor<2, dim>& F) const override
-  {
-    return inner_->strain_energy_density(F);
-  }
-  bool has_solve_budget() const override { return inner_->has_solve_budget(); }
-  void set_budget(const SolveBudget& budget) override { inner_->set_budget(budget); }
-  void commit() override { inner_->commit(); }
-  void rollback() override { inner_->rollback(); }
-  void rebalance() override { inner_->rebalance(); }
-  std::vector<std::vector<char>> gather_committed_states(int root) const override
-  {
-    return inner_->gather_committed_states(root);
-  }
-  void inject_fault(unsigned int ip, RveFault fault) override { inner_->inject_fault(ip, fault); }
-  void write_particles(unsigned int ip, const std::string& prefix, long step) const override
-  {
-    inner_->write_particles(ip, prefix, step);
-  }
 
 private:
-  std::unique_ptr<Material<dim>> inner_;
   std::vector<IpState<dim>> corotational_; ///< the points as the inner material sees them
 };
 } // namespace fe2dem::macro

@@ -53,7 +53,8 @@ struct IpState
   static constexpr std::size_t packed_size() { return 7 * dim * dim + 1 + RveStatistics<dim>::packed_size(); }
   double* pack(double* out) const
   {
-    for (const dealii::Tensor<2, dim>* t : {&F, &P, &F_last_step, &F_committed, &F_corotational, &F_nonlocal, &F_increment_committed})
+    for (const dealii::Tensor<2, dim>* t :
+         {&F, &P, &F_last_step, &F_committed, &F_corotational, &F_nonlocal, &F_increment_committed})
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           *out++ = (*t)[i][j];
@@ -62,7 +63,8 @@ struct IpState
   }
   const double* unpack(const double* in)
   {
-    for (dealii::Tensor<2, dim>* t : {&F, &P, &F_last_step, &F_committed, &F_corotational, &F_nonlocal, &F_increment_committed})
+    for (dealii::Tensor<2, dim>* t :
+         {&F, &P, &F_last_step, &F_committed, &F_corotational, &F_nonlocal, &F_increment_committed})
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           (*t)[i][j] = *in++;

@@ -12,7 +12,7 @@ using namespace dealii;
 template <int dim>
 NonlocalMaterial<dim>::NonlocalMaterial(std::unique_ptr<Material<dim>> inner, NonlocalOperator<dim> averaging,
                                         const double alpha)
-  : inner_(std::move(inner)), averaging_(std::move(averaging)), alpha_(alpha)
+  : MaterialWrapper<dim>(std::move(inner)), averaging_(std::move(averaging)), alpha_(alpha)
 {
   if (!(alpha >= 0.0 && alpha <= 1.0))
     throw std::invalid_argument("NonlocalMaterial: alpha = " + std::to_string(alpha) + " is not in [0, 1]");
@@ -44,7 +44,7 @@ EvaluationCost NonlocalMaterial<dim>::evaluate(std::vector<IpState<dim>>& points
                                " has det F <= 0: its neighbours within 'Interaction radius' (subsection "
                                "Nonlocal) moved too far in one step; use more load steps or a smaller radius");
   }
-  const EvaluationCost cost = inner_->evaluate(seen_);
+  const EvaluationCost cost = this->inner().evaluate(seen_);
   for (std::size_t k = 0; k < n; ++k)
   {
     IpState<dim>& p = points[k];

@@ -26,7 +26,7 @@
  */
 #pragma once
 
-#include "materials/material.h"
+#include "materials/material_wrapper.h"
 #include "nonlocal/nonlocal_operator.h"
 
 #include <memory>
@@ -34,7 +34,7 @@
 namespace fe2dem::macro
 {
 template <int dim>
-class NonlocalMaterial : public Material<dim>
+class NonlocalMaterial : public MaterialWrapper<dim>
 {
 public:
   /**
@@ -47,29 +47,8 @@ public:
   /// Sets every point's P (and statistics), F_nonlocal_trial and F_corotational_trial.
   /// @throws std::runtime_error if an averaged F has det <= 0, naming the point.
   EvaluationCost evaluate(std::vector<IpState<dim>>& points) override;
-  double wave_speed() const override { return inner_->wave_speed(); }
-  /// W of the inner material at the point's own F (the energy balance of a homogeneous state).
-  double strain_energy_density(const dealii::Tensor<2, dim>& F) const override
-  {
-    return inner_->strain_energy_density(F);
-  }
-  bool has_solve_budget() const override { return inner_->has_solve_budget(); }
-  void set_budget(const SolveBudget& budget) override { inner_->set_budget(budget); }
-  void commit() override { inner_->commit(); }
-  void rollback() override { inner_->rollback(); }
-  void rebalance() override { inner_->rebalance(); }
-  std::vector<std::vector<char>> gather_committed_states(int root) const override
-  {
-    return inner_->gather_committed_states(root);
-  }
-  void inject_fault(unsigned int ip, RveFault fault) override { inner_->inject_fault(ip, fault); }
-  void write_particles(unsigned int ip, const std::string& prefix, long step) const override
-  {
-    inner_->write_particles(ip, prefix, step);
-  }
 
 private:
-  std::unique_ptr<Material<dim>> inner_;
   NonlocalOperator<dim> averaging_;
   double alpha_;
   std::vector<dealii::Tensor<2, dim>> current_, lagged_, averaged_; ///< dF, dF at n+alpha, their average

@@ -70,8 +70,10 @@ set(FE2DEM_LONG_RUNS
   rve_never_relaxed_names_the_fix rve_never_relaxed_continuous_gets_past
   rve_timed_hold_is_equilibrium
   macro_corotational_vs_total_lagrangian_3d macro_ramp_elastic_block_3d
-  # the nonlocal patch test on a fine mesh (the coarse 2D and 3D ones stay)
-  macro_nonlocal_fine_patch_test_2d
+  # the nonlocal patch test on a fine mesh (the coarse 2D and 3D ones stay);
+  # nonlocal RVEs in 3D explicit dynamics (the 2D quasi-static ones stay)
+  macro_nonlocal_fine_patch_test_2d macro_nonlocal_dynamic_3d_np1 macro_nonlocal_dynamic_3d_np2
+  restart_nonlocal_dynamic_3d_kill_np2_resume_np1
   # restart variants of one guarantee (kill/resume, SIGTERM stay)
   shm_images_removed restart_dynamics_kill_np1_resume_np2
   restart_damaged_checkpoint_truncated restart_damaged_checkpoint_corrupted

@@ -10,9 +10,10 @@
 #   nonlocal_1x1 ... nonlocal_4x8,        the meshes with the nonlocal operator,
 #   nonlocal_8x16                         R = 2.5 mm (README, "Local against
 #                                         nonlocal"; 8x16 not in 'all')
-#   nonlocal_MESH_RN[_aA]                 R = N mm (and Staggering = A), e.g.
-#                                         nonlocal_4x8_R5 (not in 'all'; README,
-#                                         "Local against nonlocal")
+#   nonlocal_MESH[_op][_RN][_aA]          R = N mm (and Staggering = A), e.g.
+#                                         nonlocal_4x8_R5; _op (also mesh_MESH_op):
+#                                         one point per element (not in 'all';
+#                                         README, "Local against nonlocal")
 #   mesh_4x8_steps22                      4x8 with stage 2 in 0.25 % steps to
 #                                         5.5 % (load-step check of the peak)
 #   dns_A dns_B                           direct numerical simulations
@@ -53,7 +54,7 @@ while [[ $# -gt 0 ]]; do
     --mts20) mts20=1; shift ;;
     all) cases+=("${all_cases[@]}"); shift ;;
     -h|--help) usage ;;
-    *) [[ " ${all_cases[*]} ${extra_cases[*]} " == *" $1 "* || $1 =~ ^nonlocal_(1x1|1x2|2x4|4x8|8x16)(_R[0-9.]+)?(_a[0-9.]+)?$ ]] ||
+    *) [[ " ${all_cases[*]} ${extra_cases[*]} " == *" $1 "* || $1 =~ ^(mesh|nonlocal)_(1x1|1x2|2x4|4x8|8x16)(_op)?(_R[0-9.]+)?(_a[0-9.]+)?$ ]] ||
          { echo "run.sh: unknown case '$1' (cases: ${all_cases[*]} ${extra_cases[*]} all)" >&2; exit 2; }
        cases+=("$1"); shift ;;
   esac
@@ -80,6 +81,7 @@ overrides() {
     locked) printf 'subsection RVE\n  set Rotation = locked\nend\n' ;;
     a005|a008) printf 'subsection RVE\n  set Packing = ../../rve_templates/packings/lbs_%s\nend\n' "$1" ;;
   esac
+  [[ $1 != *_op* ]] || printf 'subsection Finite elements\n  set Quadrature = one point\nend\n'
   # 2R = 5 mm, the side of one RVE (README, "Local against nonlocal"); nonlocal_MESH_RN: R = N mm
   # (_aA: Staggering = A)
   if [[ $1 == nonlocal_* ]]; then

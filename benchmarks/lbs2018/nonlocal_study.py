@@ -7,7 +7,7 @@ Usage: nonlocal_study.py [DIR]   (Debian's python3 with numpy, matplotlib, h5py)
 
 Reads runs/{mesh,nonlocal}_{1x1,1x2,2x4,4x8,8x16}/ and runs/dns_B/particles/
 (run.sh), writes into results/:
-  nonlocal_curves.png         stress ratio against axial strain, both families
+  nonlocal_curves.png         stress ratio against axial strain, every family
   nonlocal_spread.csv         per step from the peak to 10 %: (max - min)/mean
                               of the stress ratio over the meshes, local and nonlocal
   nonlocal_band_width.csv     band width (band_width.py) per case and in DNS B
@@ -36,7 +36,9 @@ MESHES = ["1x1", "1x2", "2x4", "4x8", "8x16"]
 BAND_FROM, BAND_TO = 0.09, 0.10    # DNS B: the dumps around the last step (every second row)
 FAMILIES = {"local": ("mesh_{}", "local"),                      # case pattern, label
             "nonlocal R = 2.5 mm": ("nonlocal_{}", "R 2.5"),
-            "nonlocal R = 5 mm": ("nonlocal_{}_R5", "R 5")}
+            "nonlocal R = 5 mm": ("nonlocal_{}_R5", "R 5"),
+            "local, one point": ("mesh_{}_op", "local 1pt"),
+            "nonlocal R = 2.5 mm, one point": ("nonlocal_{}_op", "R 2.5 1pt")}
 DNS_DUMP_EVERY = 2                 # run.sh: Particle dumps every of dns_B
 
 
@@ -78,14 +80,15 @@ def main():
     curves = {c: analyse.curve(c) if c in info else None for f in families.values() for c in f}
 
     fig, ax = plt.subplots(figsize=(7, 4.5))
-    for fam, style in zip(families, ("--", "-", ":")):
+    for fam, style in zip(families, ("--", "-", ":", "-.", (0, (1, 3)))):
         for k, c in enumerate(families[fam]):
             if curves[c]:
-                ax.plot(100 * np.array(curves[c]["axial_strain"]), curves[c]["stress_ratio"], style,
+                ax.plot(100 * np.array(curves[c]["axial_strain"]), curves[c]["stress_ratio"], linestyle=style,
                         color=f"C{k}", label=f"{FAMILIES[fam][1]} {c.split('_')[1]}")
     ax.set_xlabel("axial strain (%)")
     ax.set_ylabel("average stress ratio")
-    ax.set_title("[LBS] biaxial test: local (dashed), nonlocal R = 2.5 mm (solid), 5 mm (dotted)", fontsize=9)
+    ax.set_title("[LBS] biaxial test: local (dashed), nonlocal R = 2.5 mm (solid), 5 mm (dotted);\n"
+                 "one point per element: local (dash-dot), R = 2.5 mm (loose dots)", fontsize=8)
     ax.legend(fontsize=7, ncol=2)
     ax.grid(alpha=0.3)
     fig.tight_layout()

@@ -39,14 +39,6 @@ FAMILIES = {"local": ("mesh_{}", "local"),                      # case pattern, 
             "nonlocal R = 5 mm": ("nonlocal_{}_R5", "R 5"),
             "local, one point": ("mesh_{}_op", "local 1pt"),
             "nonlocal R = 2.5 mm, one point": ("nonlocal_{}_op", "R 2.5 1pt")}
-DNS_DUMP_EVERY = 2                 # run.sh: Particle dumps every of dns_B
-
-
-def rows_at(case, strains):
-    """history.h5 rows of stage 2 at the given axial strains."""
-    with h5py.File(os.path.join(runs, case, "history.h5"), "r") as h:
-        a = h["axial_strain"][()]
-    return [int(np.argmin(np.abs(a - s) + (a == 0) * 1.0)) for s in strains]
 
 
 def spread_after_peak(curves, cases):

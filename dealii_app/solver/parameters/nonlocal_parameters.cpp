@@ -33,8 +33,9 @@ void Nonlocal::declare_parameters(dealii::ParameterHandler& prm)
                     "of the last committed step (load step; time step in dynamics) plus alpha "
                     "times their current one. 1: every increment current (all are known before "
                     "any RVE solves here). alpha < 1 is [LSYF]'s lag; it is exact only while the "
-                    "increments stay the same from step to step: after rest (the first step of a stage, the "
-                    "first time step) the neighbours count with alpha times their increment, so "
+                    "increments stay the same from step to step: after rest (the first step of a "
+                    "stage, the first time step) the neighbours count with alpha times their "
+                    "increment, so "
                     "even a homogeneous deformation is not reproduced (0.9 % of the step's strain "
                     "in the 3D patch test with alpha = 0.5).");
   prm.leave_subsection();

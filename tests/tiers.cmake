@@ -41,6 +41,9 @@ set(FE2DEM_LONG_RUNS
   rve_continuous_triaxial_reference_affine
   rve_continuous_proportional_0.25 rve_continuous_proportional_0.125
   rve_continuous_integral_0.125 rve_continuous_hold_rows
+  # the held diagnostics of the non-default 'Solve drive' = continuous on
+  # small_3d (the lsyf_1000 continuous drive against YADE stays)
+  rve_continuous_small_3d_keep
   rve_continuous_ensemble_0.25 rve_continuous_ensemble_0.125 rve_continuous_ensemble_0.0625
   rve_continuous_ensemble_0.03125
   # RVEs prepared at a pressure, dynamic (the unprepared dynamic runs stay)

@@ -9,6 +9,9 @@
 #                          triaxial at 0.25 and 0.125 /s to 3 %
 #   run.sh BUILD slow_small_3d  small_3d triaxial and shear at 0.0625 and 0.03125 /s as
 #                          well: the rate ensemble beside YADE's (rate_ensemble.py)
+#   run.sh BUILD rates_keep  rates and slow_small_3d with 'Inner start' = keep (the
+#                          continuous drive's default before session 24) into
+#                          results/inner_keep/; the held diagnostics start from them
 #   run.sh BUILD stepped   small_3d triaxial, stepped: 0.5 % and 0.25 % steps to 5 %, 0.1 % to 2.5 %
 #   run.sh BUILD held      the 0.25 /s paths of small_3d (to 3 %) and lsyf_1000 (to 2 %)
 #                          held at rest: their F every 0.5 % and 0.25 % as table
@@ -27,7 +30,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-[[ $# -ge 2 ]] || { sed -n '2,18p' "$0"; exit 2; }
+[[ $# -ge 2 ]] || { sed -n '2,21p' "$0"; exit 2; }
 build="$(cd "$1" && pwd)"; what="$2"; force="${3:-}"
 rve="$build/dealii_app/rve_driver/fe2dem-rve"
 [[ -x "$rve" ]] || { echo "run.sh: no fe2dem-rve in $build (build it first)"; exit 2; }
@@ -50,6 +53,7 @@ case_run() {
 }
 
 rate() { echo "s/^\( *set Strain rate *=\).*/\1 $1/"; }
+keep='s/^\( *set Inner start *=\).*/\1 keep/'
 
 rates() {
   for packing in small_3d lsyf_1000; do
@@ -62,9 +66,23 @@ rates() {
   for r in 0.25 0.125; do
     case_run "triaxial_lsyf_4096_${r}" triaxial_lsyf_4096.prm "$(rate $r)"
   done
-  for r in 0.25 0.125; do
+  for r in 0.25 0.125; do # measured with keep (before session 24), kept so
     case_run "triaxial_small_3d_${r}_proportional" triaxial_small_3d.prm \
-      "$(rate $r); s/^\( *set Frame membrane .*\)/\1\n  set Template variables = timed_servo proportional/"
+      "$(rate $r); $keep; s/^\( *set Frame membrane .*\)/\1\n  set Template variables = timed_servo proportional/"
+  done
+}
+
+# the continuous paths with 'Inner start' = keep, into results/inner_keep/
+rates_keep() {
+  local packing path r
+  for packing in small_3d lsyf_1000 lsyf_4096; do
+    for path in triaxial shear; do
+      [[ -f "$here/${path}_${packing}.prm" ]] || continue
+      for r in 0.25 0.125 0.0625 0.03125; do
+        [[ $packing != small_3d && $r != 0.25 && $r != 0.125 ]] && continue
+        case_run "inner_keep/${path}_${packing}_${r}" "${path}_${packing}.prm" "$(rate $r); $keep"
+      done
+    done
   done
 }
 
@@ -77,16 +95,17 @@ slow_small_3d() {
 }
 
 stepped() {
-  # steps of 0.5 % and 0.25 % to 5 %, of 0.1 % to 2.5 %, with the continuous runs' RVE settings
+  # steps of 0.5 % and 0.25 % to 5 %, of 0.1 % to 2.5 %, with the continuous runs' RVE
+  # settings (Inner start keep, as the stepped default)
   for case in "10 0.05" "20 0.05" "25 0.025"; do
     read -r n strain <<<"$case"
     case_run "triaxial_small_3d_stepped_${n}" triaxial_small_3d.prm \
-      "s/^\( *set Drive *=\).*/\1 stepped/; s/^\( *set Loading steps *=\).*/\1 $n/; s/^\( *set Axial strain *=\).*/\1 $strain/"
+      "$keep; s/^\( *set Drive *=\).*/\1 stepped/; s/^\( *set Loading steps *=\).*/\1 $n/; s/^\( *set Axial strain *=\).*/\1 $strain/"
   done
 }
 
 held() {
-  # the continuous path (0.25 /s) held at rest: its F at every 0.5 % (and
+  # the continuous path (0.25 /s, Inner start keep: results/inner_keep) held at rest: its F at every 0.5 % (and
   # 0.25 %) as table paths, each row one quasi-static solve, with each solve
   # drive; small_3d to 3 %, lsyf_1000 to 2 %. 'iterations_slow': the servo
   # iterations with the frame moved at about 0.25 /s (move_rate).
@@ -97,22 +116,23 @@ held() {
       [[ $packing == lsyf_1000 && $every == 1 && $drive == iterations_slow ]] && continue
       name="held_${packing}_${every}_${drive}"
       mkdir -p "$results/$name"
-      /usr/bin/python3 "$root/tests/held_path.py" table "$results/triaxial_${packing}_0.25/rve.csv" "$every" \
+      /usr/bin/python3 "$root/tests/held_path.py" table "$results/inner_keep/triaxial_${packing}_0.25/rve.csv" "$every" \
         "$results/$name/table.txt" "$rows"
       move=""; [[ $drive == iterations_slow ]] && move="s/^\( *set Step budget.*\)/\1\n  set Template variables = move_rate $([[ $packing == small_3d ]] && echo 5e-6 || echo 2e-6)/;"
       case_run "$name" "triaxial_${packing}.prm" \
-        "s|^\( *set Type *=\).*|\1 table\n  set Table file = $results/$name/table.txt|; $move s/^\( *set Servo tolerance .*\)/\1\n  set Solve drive = $([[ $drive == continuous ]] && echo continuous || echo servo iterations)/"
+        "$keep; s|^\( *set Type *=\).*|\1 table\n  set Table file = $results/$name/table.txt|; $move s/^\( *set Servo tolerance .*\)/\1\n  set Solve drive = $([[ $drive == continuous ]] && echo continuous || echo servo iterations)/"
     done
   done
 }
 
 holds() {
   # the continuous drive (0.25 /s) held at rest at every 0.5 % ('Hold rows' =
-  # 2) to 3 %, against YADE's held cell (../yade_periodic, RELAX_EVERY=2)
+  # 2) to 3 %, against YADE's held cell (../yade_periodic, RELAX_EVERY=2);
+  # measured with Inner start keep, as the runs they are compared with
   local packing
   for packing in small_3d lsyf_1000; do
     case_run "hold_rows_${packing}" "triaxial_${packing}.prm" \
-      "s/^\( *set Loading steps *=\).*/\1 12/; s/^\( *set Axial strain *=\).*/\1 0.03/; s/^\( *set Drive .*\)/\1\n  set Hold rows = 2/"
+      "$keep; s/^\( *set Loading steps *=\).*/\1 12/; s/^\( *set Axial strain *=\).*/\1 0.03/; s/^\( *set Drive .*\)/\1\n  set Hold rows = 2/"
   done
 }
 
@@ -159,15 +179,42 @@ for y in yade:
 PY
 }
 
-tables() {
-  local c="$here/curves.py"
+# rate_tables DIR: the continuous paths of DIR (results or results/inner_keep):
+# their two rates, against YADE's periodic cell and small_3d as an ensemble
+rate_tables() {
+  local dir="$1" c="$here/curves.py" packing path r
   for packing in small_3d lsyf_1000 lsyf_4096; do
     for path in triaxial shear; do
-      local a="$results/${path}_${packing}_0.125/rve.csv" b="$results/${path}_${packing}_0.25/rve.csv"
-      [[ -f "$a" && -f "$b" ]] && "$c" compare "$a" "$b" > "$results/rates_${path}_${packing}.txt"
+      local a="$dir/${path}_${packing}_0.125/rve.csv" b="$dir/${path}_${packing}_0.25/rve.csv"
+      [[ -f "$a" && -f "$b" ]] && "$c" compare "$a" "$b" > "$dir/rates_${path}_${packing}.txt"
     done
   done
-  local ref="$results/triaxial_small_3d_0.125/rve.csv" others=()
+  # against YADE's periodic cell (benchmarks/yade_periodic/run_3d.sh makes its results_3d):
+  # one call per RVE rate (the plot holds one RVE curve per packing and path)
+  for r in 0.125 0.25; do
+    local yade=() suffix=""; [[ $r == 0.25 ]] && suffix="_0.25"
+    for packing in small_3d lsyf_1000 lsyf_4096; do for path in triaxial shear; do
+      [[ -f "$dir/${path}_${packing}_${r}/rve.csv" ]] && yade+=(--rve "${packing}_${path}=$dir/${path}_${packing}_${r}/rve.csv")
+    done; done
+    [[ ${#yade[@]} -gt 0 ]] && /usr/bin/python3 "$root/benchmarks/yade_periodic/compare_3d.py" "${yade[@]}" \
+      --plot "$dir/vs_yade$suffix.png" --tables "$dir/vs_yade$suffix.md" > "$dir/vs_yade$suffix.txt"
+  done
+  # small_3d as an ensemble: the RVE's mean over four rates against YADE's (rate_ensemble.py)
+  local y3="$root/benchmarks/yade_periodic/results_3d"
+  for path in triaxial shear; do
+    local ens=("$dir/${path}_small_3d_"{0.25,0.125,0.0625,0.03125}/rve.csv)
+    ls "${ens[@]}" > /dev/null 2>&1 && "$here/rate_ensemble.py" "$path" --yade "$y3/small_3d_${path}_rate"{1,0.5,0.25,0.125}.csv \
+      --rve "${ens[@]}" > "$dir/ensemble_small_3d_${path}.txt"
+  done
+  return 0
+}
+
+tables() {
+  local c="$here/curves.py"
+  rate_tables "$results"
+  rate_tables "$results/inner_keep"
+  # the stepped paths and the proportional servo were measured with Inner start keep: against keep
+  local ref="$results/inner_keep/triaxial_small_3d_0.125/rve.csv" others=()
   for n in 10 20 25; do
     [[ -f "$results/triaxial_small_3d_stepped_${n}/rve.csv" ]] && others+=("$results/triaxial_small_3d_stepped_${n}/rve.csv")
   done
@@ -180,25 +227,6 @@ tables() {
     "$results/one_element_lsyf_1000_0.25_keep/rve.csv" "$one/macro_summary.csv" "$one/macro_10_steps_summary.csv" \
     > "$results/one_element_stepped_vs_continuous.txt"
   [[ -f "$oref" ]] && "$c" --iso 2 compare "$oref" "$one/rve_100_steps.csv" >> "$results/one_element_stepped_vs_continuous.txt"
-  # against YADE's periodic cell (benchmarks/yade_periodic/run_3d.sh makes its results_3d):
-  # one call per RVE rate (the plot holds one RVE curve per packing and path), and the
-  # proportional servo apart
-  local r suffix
-  for r in 0.125 0.25; do
-    local yade=() suffix=""; [[ $r == 0.25 ]] && suffix="_0.25"
-    for packing in small_3d lsyf_1000 lsyf_4096; do for path in triaxial shear; do
-      [[ -f "$results/${path}_${packing}_${r}/rve.csv" ]] && yade+=(--rve "${packing}_${path}=$results/${path}_${packing}_${r}/rve.csv")
-    done; done
-    /usr/bin/python3 "$root/benchmarks/yade_periodic/compare_3d.py" "${yade[@]}" \
-      --plot "$results/vs_yade$suffix.png" --tables "$results/vs_yade$suffix.md" > "$results/vs_yade$suffix.txt"
-  done
-  # small_3d as an ensemble: the RVE's mean over four rates against YADE's (rate_ensemble.py)
-  local y3="$root/benchmarks/yade_periodic/results_3d"
-  for path in triaxial shear; do
-    local ens=("$results/${path}_small_3d_"{0.25,0.125,0.0625,0.03125}/rve.csv)
-    ls "${ens[@]}" > /dev/null 2>&1 && "$here/rate_ensemble.py" "$path" --yade "$y3/small_3d_${path}_rate"{1,0.5,0.25,0.125}.csv \
-      --rve "${ens[@]}" > "$results/ensemble_small_3d_${path}.txt"
-  done
   local p25="$results/triaxial_small_3d_0.25_proportional/rve.csv"
   [[ -f "$p25" ]] && /usr/bin/python3 "$root/benchmarks/yade_periodic/compare_3d.py" --rve "small_3d_triaxial=$p25" \
     --plot "$results/vs_yade_proportional.png" --tables "$results/vs_yade_proportional.md" > "$results/vs_yade_proportional.txt"
@@ -210,7 +238,7 @@ tables() {
     [[ -f "$held_y" ]] && "$here/holds.py" yade "$y/${packing_h}_triaxial_rate1.csv" "$held_y" \
       > "$results/holds_yade_${packing_h}.txt"
     [[ -f "$results/hold_rows_${packing_h}/rve.csv" ]] && "$here/holds.py" rve \
-      "$results/triaxial_${packing_h}_0.25/rve.csv" "$results/hold_rows_${packing_h}/rve.csv" 2 \
+      "$results/inner_keep/triaxial_${packing_h}_0.25/rve.csv" "$results/hold_rows_${packing_h}/rve.csv" 2 \
       > "$results/holds_rve_${packing_h}.txt"
   done
   local h
@@ -218,7 +246,7 @@ tables() {
     [[ -f "$h" ]] || continue
     local case_dir; case_dir="$(dirname "$h")"; local packing
     packing="$(basename "$case_dir" | sed 's/^held_\(small_3d\|lsyf_1000\)_.*/\1/')"
-    /usr/bin/python3 "$root/tests/held_path.py" check "$results/triaxial_${packing}_0.25/rve.csv" "$h" 0.02 0.05 \
+    /usr/bin/python3 "$root/tests/held_path.py" check "$results/inner_keep/triaxial_${packing}_0.25/rve.csv" "$h" 0.02 0.05 \
       > "$case_dir/vs_continuous.txt" || true
   done
   ls "$results"/*.txt
@@ -226,6 +254,7 @@ tables() {
 
 case "$what" in
   rates) rates ;;
+  rates_keep) rates_keep ;;
   slow_small_3d) slow_small_3d ;;
   stepped) stepped ;;
   held) held ;;
@@ -233,6 +262,6 @@ case "$what" in
   tables) tables ;;
   one_element) one_element ;;
   biaxial_2d) biaxial_2d ;;
-  all) rates; slow_small_3d; stepped; held; holds; one_element; biaxial_2d; tables ;;
-  *) sed -n '2,18p' "$0"; exit 2 ;;
+  all) rates; slow_small_3d; rates_keep; stepped; held; holds; one_element; biaxial_2d; tables ;;
+  *) sed -n '2,21p' "$0"; exit 2 ;;
 esac

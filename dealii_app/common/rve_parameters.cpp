@@ -183,10 +183,13 @@ void RveParameters::declare_parameters(dealii::ParameterHandler& prm)
                     "frame through contacts ([LBS]); affine = they also move with the affine "
                     "velocity field of the old to the new F while the frame moves (contact "
                     "springs see it), as the particles of a periodic cell follow its mean "
-                    "motion. auto = affine in explicit dynamics ('Analysis' = dynamic of "
-                    "fe2dem), where the macro scale carries the grains' inertia (with keep the "
-                    "RVE's interior lags its frame and the RVE answers a 10 kHz strain 30 % "
-                    "softer than a slow one on lsyf_4096), keep otherwise.");
+                    "motion. auto = affine where the RVE advances in physical time (timed "
+                    "solves: fe2dem's explicit dynamics and slow loading, fe2dem-rve's Drive = "
+                    "continuous), keep where each solve relaxes to rest (relaxed steps, stepped "
+                    "and table paths, whatever the Solve drive). With keep in timed "
+                    "solves the RVE's interior lags its frame: lsyf_4096 answers a 10 kHz strain "
+                    "30 % softer than a slow one, and small_3d sheared continuously is 3 % "
+                    "stiffer than YADE's periodic cell.");
   prm.declare_entry("Relaxation criterion", "ekin_epot", Selection("ekin_epot|unbalanced"),
                     "E_kin/E_pot (R12) or the unbalanced-force index (R13).");
   prm.declare_entry("Relaxation tolerance", "1e-3", Double(0.0),
@@ -325,10 +328,10 @@ void RveParameters::check_files(const std::string& prm_file) const
                                "at spaces; use a path without spaces (e.g. a symbolic link)");
 }
 
-void RveParameters::resolve_inner_start(bool explicit_dynamics)
+void RveParameters::resolve_inner_start(bool timed_solves)
 {
   if (inner_start == "auto")
-    inner_start = explicit_dynamics ? "affine" : "keep";
+    inner_start = timed_solves ? "affine" : "keep";
 }
 
 std::map<std::string, std::string> RveParameters::entry_variables() const

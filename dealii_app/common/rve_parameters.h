@@ -66,13 +66,16 @@ struct RveParameters
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm, const std::string& base_dir);
   /**
-   * Replaces 'Inner start' = auto by its value: affine when the macro scale
-   * is explicit dynamics (@p explicit_dynamics; the macro mass carries the
-   * grains' inertia, so the RVE's mean motion must not lag its frame), keep
-   * otherwise (quasi-static paths, where the two agree within 1.2 % on
-   * lsyf_1000, benchmarks/rve_continuous/README.md).
+   * Replaces 'Inner start' = auto by its value: affine when the RVE advances
+   * in physical time (@p timed_solves: fe2dem's explicit dynamics and slow
+   * loading, fe2dem-rve's continuous drive), as the particles of a periodic
+   * cell follow its mean motion; keep where every solve relaxes to rest
+   * (relaxed steps, stepped and table paths: [LBS]). Against YADE's
+   * periodic cell, keep made small_3d 2.4-3.2 % too stiff in continuous
+   * shear at 0.25-0.75 % strain, affine is within 0.6 % there
+   * (benchmarks/rve_continuous/README.md, "Inner start").
    */
-  void resolve_inner_start(bool explicit_dynamics);
+  void resolve_inner_start(bool timed_solves);
   /// The RVE set-up these parameters describe. @pre resolve_inner_start() was called.
   RveSetup setup(const std::string& log_file) const;
   /// 'name value, name value' -> map. @throws std::runtime_error naming the entry and the pair.

@@ -649,7 +649,7 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
   identity = result_defining_entries(prm);
   this->file = file;
   rve.parse_parameters(prm, base.string());
-  rve.resolve_inner_start(dynamics.dynamic);
+  rve.resolve_inner_start(dynamics.central_differences());
   if (material.type == MaterialParameters::Type::rve && rve.solve_drive == "continuous")
     throw std::runtime_error(
       "subsection RVE: 'Solve drive' = continuous is a setting of fe2dem-rve's stepped and table "

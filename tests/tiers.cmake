@@ -57,8 +57,10 @@ set(FE2DEM_LONG_RUNS
   # the 3D simple-shear example against its fe2dem-rve reference (55 s; the
   # 3D slow-loading column with RVEs stays)
   rve_example_simple_shear_3d_reference
-  # [LSYF] problem 2 at full size: the linear wave column and its M (minutes)
+  # [LSYF] problem 2 at full size: the linear wave column and its M, the
+  # 0.1 mm column and its RVE's sigma(eps) to 1 % (minutes each)
   macro_lsyf_constrained_modulus macro_lsyf_wave_column_1um
+  macro_lsyf_constrained_modulus_1_percent macro_lsyf_wave_column_0.1mm
   # slow loading against the continuous reference (the column stays)
   macro_slow_loading_triaxial_0.25 macro_slow_loading_triaxial_0.125
   # waves and beams of many steps (the 2D energy checks stay)

@@ -93,6 +93,9 @@ wave_table() {
     echo "## driven at 0.1 mm ([LSYF])"
     $py "$here/wave.py" column "$r/constrained_modulus/out" "$r/wave_column/out" "$r/wave_column_elastic/out" \
       "$r/wave_column.png" 1e-4 "$r/constrained_modulus_1_percent/out"
+    echo "## driven at 0.1 mm: against a 1D bar of the same discretisation with the RVE's own sigma(eps) (column_1d.py)"
+    $py "$here/column_1d.py" table "$r/constrained_modulus/out" "$r/wave_column/out" "$r/wave_column_elastic/out" \
+      "$r/constrained_modulus_1_percent/out" 1e-4
     echo "## driven at 0.1 mm, half the macro step (5e-7 s)"
     [[ -f "$r/wave_column_half_step/out/history.h5" ]] &&
       $py "$here/wave.py" column "$r/constrained_modulus/out" "$r/wave_column_half_step/out" "$r/wave_column_elastic/out" \
@@ -100,6 +103,9 @@ wave_table() {
     echo "## driven at 1 um (linear)"
     $py "$here/wave.py" column "$r/constrained_modulus/out" "$r/wave_column_1um/out" "$r/wave_column_1um_elastic/out" \
       "$r/wave_column_1um.png" 1e-6
+    echo "## driven at 1 um: against the 1D bars"
+    $py "$here/column_1d.py" table "$r/constrained_modulus/out" "$r/wave_column_1um/out" "$r/wave_column_1um_elastic/out" \
+      "$r/constrained_modulus_1_percent/out" 1e-6
   } 2>&1 | tee "$r/wave_column.txt"
 }
 

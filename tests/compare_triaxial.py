@@ -5,6 +5,9 @@ stress sigma_22 (axial direction y) and the deviator q = sigma_22 - (sigma_11
 + sigma_33) / 2 must agree within TOL (relative to the rve.csv value).
 Usage: compare_triaxial.py HISTORY_H5 RVE_CSV SKIP_ROWS TOL [ROWS]
   HISTORY_H5 may also be another rve.csv (its rows after SKIP_ROWS).
+  Either argument may be a comma-separated list of runs of one kind: the
+  mean stress over them at each row (an ensemble, e.g. of rates a few per
+  cent apart, whose stress drops after a peak fall at different strains).
   SKIP_ROWS: rve.csv rows before the first one compared (F = I and the
   isotropic stage); ROWS: compare only the first ROWS rows (e.g. to the
   peak); the others are printed."""
@@ -17,12 +20,27 @@ history, rve_csv, skip, tol = sys.argv[1], sys.argv[2], int(sys.argv[3]), float(
 n_checked = int(sys.argv[5]) if len(sys.argv) > 5 else None
 a, lateral = 1, [0, 2]
 names = [f"sigma{i}{j}" for i in range(1, 4) for j in range(1, 4)]
-if history.endswith(".csv"):
-    macro = [[float(r[n]) for n in names] for r in list(csv.DictReader(open(history)))[skip:]]
-else:
-    with h5py.File(history, "r") as f:
-        macro = f["sigma"][:, 0, :]
-rows = list(csv.DictReader(open(rve_csv)))[skip:]
+
+
+def read_run(path):
+    """The nine stress components at each row of one history.h5 or rve.csv."""
+    if path.endswith(".csv"):
+        return [[float(r[n]) for n in names] for r in list(csv.DictReader(open(path)))[skip:]]
+    with h5py.File(path, "r") as f:
+        return [list(s) for s in f["sigma"][:, 0, :]]
+
+
+def mean_of(paths):
+    """The row-wise mean over the comma-separated runs in PATHS (all of one length)."""
+    runs = [read_run(p) for p in paths.split(",")]
+    if len({len(r) for r in runs}) != 1:
+        print(f"FAIL: the runs of {paths} have {[len(r) for r in runs]} rows")
+        sys.exit(1)
+    return [[sum(r[k][c] for r in runs) / len(runs) for c in range(9)] for k in range(len(runs[0]))]
+
+
+macro = mean_of(history)
+rows = [dict(zip(names, map(str, s))) for s in mean_of(rve_csv)]
 if len(rows) != len(macro) or not rows:
     print(f"FAIL: {len(macro)} history.h5 steps vs {len(rows)} rve.csv rows")
     sys.exit(1)

@@ -186,10 +186,10 @@ void RveParameters::declare_parameters(dealii::ParameterHandler& prm)
                     "motion. auto = affine where the RVE advances in physical time (timed "
                     "solves: fe2dem's explicit dynamics and slow loading, fe2dem-rve's Drive = "
                     "continuous), keep where each solve relaxes to rest (relaxed steps, stepped "
-                    "and table paths, whatever the Solve drive). With keep in timed "
-                    "solves the RVE's interior lags its frame: lsyf_4096 answers a 10 kHz strain "
-                    "30 % softer than a slow one, and small_3d sheared continuously is 3 % "
-                    "stiffer than YADE's periodic cell.");
+                    "and table paths, whatever the Solve drive). With keep in timed solves the "
+                    "RVE's interior lags its frame: lsyf_4096 answers a 10 kHz strain 30 % "
+                    "softer than a slow one, and small_3d sheared continuously is 3 % stiffer "
+                    "than YADE's periodic cell.");
   prm.declare_entry("Relaxation criterion", "ekin_epot", Selection("ekin_epot|unbalanced"),
                     "E_kin/E_pot (R12) or the unbalanced-force index (R13).");
   prm.declare_entry("Relaxation tolerance", "1e-3", Double(0.0),

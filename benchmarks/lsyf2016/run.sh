@@ -20,15 +20,18 @@
 #              default 'Inner start' (affine in dynamics) and with keep, and
 #              with keep also with the proportional frame servo and without
 #              Cundall damping at 10 kHz): results/dynamic_modulus.txt
+#   problem1_ensemble  the triaxial dynamic element and its single RVE at
+#              0.5 /s x 0.98, 1.02, 1.04 as well: the means of four runs each
+#              (results/problem1_ensemble.txt)
 #   tables     the comparison tables from what exists
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
 # result exists is not run again.
 #
-#   run.sh BUILD wave|problem1|modulus|tables|all
+#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|tables|all
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-[[ $# -eq 2 ]] || { sed -n '2,27p' "$0"; exit 2; }
+[[ $# -eq 2 ]] || { sed -n '2,30p' "$0"; exit 2; }
 build="$(cd "$1" && pwd)"
 what=$2
 results="$here/results"
@@ -160,6 +163,41 @@ problem1() {
   wait
   problem1_tables
 }
+# problem 1, triaxial, as an ensemble of four rates 2-4 % apart: after the
+# plateau single runs drop at different strains
+problem1_ensemble() {
+  local f end rate dyn=("$results/problem1_triaxial_dynamic/out/history.h5") ref=("$results/problem1_triaxial_rve/rve.csv")
+  for f in 0.98 1.02 1.04; do
+    end=$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.04 / f}')
+    rate=$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.5 * f}')
+    run_rve "problem1_triaxial_rve_$rate" "$here/problem1_triaxial_rve.prm" "s#^\(  set Strain rate *=\).*#\1 $rate#" &
+    run_macro "problem1_triaxial_dynamic_$end" "$here/problem1_triaxial_dynamic.prm" 1 \
+      "s#set End time   = 0.04#set End time   = $end#; s#-2e-4 \* t / 0.04#-2e-4 * t / $end#"
+    wait
+    dyn+=("$results/problem1_triaxial_dynamic_$end/out/history.h5")
+    ref+=("$results/problem1_triaxial_rve_$rate/rve.csv")
+  done
+  problem1_ensemble_table
+}
+problem1_ensemble_table() {
+  local f dyn=() ref=() IFS=,
+  for f in 1 0.98 1.02 1.04; do
+    dyn+=("$results/problem1_triaxial_dynamic_$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.04 / f}')/out/history.h5")
+    ref+=("$results/problem1_triaxial_rve_$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.5 * f}')/rve.csv")
+  done
+  dyn[0]="$results/problem1_triaxial_dynamic/out/history.h5"
+  ref[0]="$results/problem1_triaxial_rve/rve.csv"
+  [[ -f "${dyn[3]}" && -f "${ref[3]}" ]] || return 0
+  {
+    echo "# [LSYF] problem 1, triaxial: the mean of four dynamic elements against the mean of four single RVEs (0.5 /s x 1, 0.98, 1.02, 1.04)"
+    $py "$root/tests/compare_triaxial.py" "${dyn[*]}" "${ref[*]}" 3 0.02 || true
+    echo "## each single RVE against the single RVEs' mean"
+    local r d
+    for r in "${ref[@]}"; do $py "$root/tests/compare_triaxial.py" "$r" "${ref[*]}" 3 0.02 | tail -1 || true; done
+    echo "## each dynamic element against the single RVEs' mean"
+    for d in "${dyn[@]}"; do $py "$root/tests/compare_triaxial.py" "$d" "${ref[*]}" 3 0.02 | tail -1 || true; done
+  } | tee "$results/problem1_ensemble.txt"
+}
 problem1_tables() {
   {
     echo "# [LSYF] problem 1, triaxial: dynamic one element against fe2dem-rve (rows every 0.25 %)"
@@ -196,8 +234,9 @@ mkdir -p "$results"
 case "$what" in
   wave) wave ;;
   problem1) problem1 ;;
+  problem1_ensemble) problem1_ensemble ;;
   modulus) modulus ;;
-  tables) wave_table; problem1_tables; modulus_table ;;
+  tables) wave_table; problem1_tables; problem1_ensemble_table; modulus_table ;;
   all) wave; problem1; modulus ;;
-  *) sed -n '2,27p' "$0"; exit 2 ;;
+  *) sed -n '2,30p' "$0"; exit 2 ;;
 esac

@@ -92,19 +92,16 @@ triaxial() {
 
 ensemble() {
   local packing=$1 out="$here/results/dynamic_bias/triaxial_$1"
-  local edit="s#packings/small_3d#packings/$packing#" f t r dyn=() ref=() pids=()
+  local edit="s#packings/small_3d#packings/$packing#" f t r
+  local dyn=("$out/dyn_0.3072/out/history.h5") ref=("$out/reference/rve.csv") # made by 'triaxial PACKING'
   for f in 0.98 1.02 1.04; do
     t=$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.3072 / f}')
     r=$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.016276 * f}')
     run_dynamic "$out/dyn_$t" "$root/tests/dynamics_rve/triaxial_3d.prm" "$t" "$edit" &
     run_reference "$out/reference_$r" "$root/tests/dynamics_rve/triaxial_continuous_rve.prm" "$r" "s/RATE/$r/; $edit"
     wait
-  done
-  for f in 1 0.98 1.02 1.04; do
-    t=$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.3072 / f}')
-    r=$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.016276 * f}')
-    [[ $f == 1 ]] && ref+=("$out/reference/rve.csv") || ref+=("$out/reference_$r/rve.csv")
     dyn+=("$out/dyn_$t/out/history.h5")
+    ref+=("$out/reference_$r/rve.csv")
   done
   local IFS=,
   {

@@ -140,8 +140,7 @@ one_element() {
   for r in 0.25 0.125; do
     case_run "one_element_lsyf_1000_${r}" one_element_lsyf_1000.prm "$(rate $r)"
   done
-  case_run "one_element_lsyf_1000_0.25_keep" one_element_lsyf_1000.prm \
-    "s/^\( *set Inner start *=\).*/\1 keep/"
+  case_run "one_element_lsyf_1000_0.25_keep" one_element_lsyf_1000.prm "$keep"
 }
 
 biaxial_2d() {

@@ -28,12 +28,13 @@ double distance(const Eigen::Matrix<double, dim, dim>& F, const std::array<doubl
 
 template <int dim>
 RvePool<dim>::RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
-                      const std::vector<QuadraturePoint>& points)
-  : RvePool(comm, factory, points, 0)
+                      const std::vector<QuadraturePoint>& points,
+                      const std::vector<std::shared_ptr<const RveFactory<dim>>>& more_factories)
+  : RvePool(comm, factory, points, 0, more_factories)
 {
   for (std::size_t k = 0; k < points_.size(); ++k)
     if (owner_[k] == rank_)
-      local_[k] = factory_->create();
+      local_[k] = factory_of(k).create();
 }
 
 // The saved states are checked, all of them and collectively, before any is
@@ -42,8 +43,8 @@ RvePool<dim>::RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> fact
 template <int dim>
 RvePool<dim>::RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
                       const std::vector<QuadraturePoint>& points, const StateSource& state_of,
-                      int load_step)
-  : RvePool(comm, factory, points, load_step)
+                      int load_step, const std::vector<std::shared_ptr<const RveFactory<dim>>>& more_factories)
+  : RvePool(comm, factory, points, load_step, more_factories)
 {
   std::map<std::size_t, std::vector<char>> states;
   int failed = INT_MAX;
@@ -55,7 +56,7 @@ RvePool<dim>::RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> fact
       if (failed == INT_MAX)
         try
         {
-          factory_->check_state(states[k]);
+          factory_of(k).check_state(states[k]);
         }
         catch (const std::runtime_error& e)
         {
@@ -65,18 +66,25 @@ RvePool<dim>::RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> fact
     }
   raise_first_failure(failed, reason, ", saved at load step " + std::to_string(load_step_));
   for (auto& [k, state] : states)
-    local_[k] = factory_->restore(state);
+    local_[k] = factory_of(k).restore(state);
 }
 
 template <int dim>
 RvePool<dim>::RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
-                      const std::vector<QuadraturePoint>& points, int load_step)
-  : comm_(comm), factory_(std::move(factory)), points_(points), owner_(points.size()),
+                      const std::vector<QuadraturePoint>& points, int load_step,
+                      const std::vector<std::shared_ptr<const RveFactory<dim>>>& more_factories)
+  : comm_(comm), factories_{std::move(factory)}, points_(points), owner_(points.size()),
     cost_(points.size(), 0.0), load_step_(load_step)
 {
+  factories_.insert(factories_.end(), more_factories.begin(), more_factories.end());
+  for (const QuadraturePoint& p : points_)
+    if (p.factory >= factories_.size())
+      throw std::invalid_argument("RvePool: IP " + std::to_string(p.id) + " names RVE factory " +
+                                  std::to_string(p.factory) + ", but " + std::to_string(factories_.size()) +
+                                  " were given");
   MPI_Comm_rank(comm_, &rank_);
   MPI_Comm_size(comm_, &n_ranks_);
-  check_factory(); // before any instance exists
+  check_factories(); // before any instance exists
   place_in_blocks();
 }
 
@@ -108,17 +116,18 @@ void RvePool<dim>::raise_first_failure(int failed, const std::string& reason, co
   throw CouplerError(p.id, msg.str());
 }
 
-// The factory's input (e.g. the LIGGGHTS template) is checked once, in a
+// Each factory's input (e.g. the LIGGGHTS template) is checked once, in a
 // child process, before any instance exists: a LIGGGHTS error there would
 // exit(1) this whole MPI job.
 template <int dim>
-void RvePool<dim>::check_factory() const
+void RvePool<dim>::check_factories() const
 {
   std::string problem;
   if (rank_ == 0)
     try
     {
-      factory_->check();
+      for (const auto& factory : factories_)
+        factory->check();
     }
     catch (const std::runtime_error& e)
     {
@@ -311,7 +320,7 @@ void RvePool<dim>::move(std::size_t k, int to)
       local_.erase(k);
     else
     {
-      local_[k] = factory_->restore(state);
+      local_[k] = factory_of(k).restore(state);
       local_[k]->set_budget(budget_);
     }
   }

@@ -30,6 +30,9 @@ struct QuadraturePoint
 {
   long id = 0;                       ///< global IP id (used in messages)
   std::array<double, 3> position{};  ///< in the macro domain (messages); unused components 0
+  /// Which factory builds this point's RVE: 0 the pool's first, k >= 1 the k-th of its
+  /// @p more_factories (e.g. a weakened packing that seeds a shear band).
+  unsigned int factory = 0;
 };
 
 /// An RVE of the pool failed; raised on every rank with the same message.
@@ -49,10 +52,14 @@ public:
    * Checks the factory's input once (factory->check() on rank 0, before any
    * RVE exists), then creates and relaxes the RVEs of this rank's share of
    * @p points (block placement in list order) and commits their initial state.
-   * @pre every rank passes the same @p points and an equivalent @p factory.
+   * A point whose QuadraturePoint::factory is k >= 1 gets its RVE from
+   * @p more_factories[k - 1] (each checked once too).
+   * @pre every rank passes the same @p points and equivalent factories.
+   * @throws std::invalid_argument if a point names a factory that was not given.
    */
   RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
-          const std::vector<QuadraturePoint>& points);
+          const std::vector<QuadraturePoint>& points,
+          const std::vector<std::shared_ptr<const RveFactory<dim>>>& more_factories = {});
 
   /// Where the RVEs of a resumed run come from: the committed state of RVE k.
   using StateSource = std::function<std::vector<char>(std::size_t k)>;
@@ -60,10 +67,12 @@ public:
    * Rebuilds the pool from saved committed states (e.g. a checkpoint) in
    * block placement over this communicator, whatever the placement was when
    * they were saved; @p load_step is the number of committed load steps.
-   * Each rank asks @p state_of only for its own RVEs.
+   * Each rank asks @p state_of only for its own RVEs; each state is restored
+   * by its point's factory, as in the first constructor.
    */
   RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
-          const std::vector<QuadraturePoint>& points, const StateSource& state_of, int load_step);
+          const std::vector<QuadraturePoint>& points, const StateSource& state_of, int load_step,
+          const std::vector<std::shared_ptr<const RveFactory<dim>>>& more_factories = {});
 
   /**
    * The committed state of every RVE (the last commit(), also in the middle
@@ -130,7 +139,10 @@ public:
 private:
   /// Shared by the public constructors, which then make this rank's RVEs.
   RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
-          const std::vector<QuadraturePoint>& points, int load_step);
+          const std::vector<QuadraturePoint>& points, int load_step,
+          const std::vector<std::shared_ptr<const RveFactory<dim>>>& more_factories);
+  /// The factory of point @p k.
+  const RveFactory<dim>& factory_of(std::size_t k) const { return *factories_[points_[k].factory]; }
   /// @p text of rank @p root on every rank. Collective.
   std::string broadcast(std::string text, int root) const;
   /**
@@ -140,14 +152,14 @@ private:
    */
   void raise_first_failure(int failed, const std::string& reason, const std::string& when) const;
   void require_committed(const char* what) const;
-  /// factory_->check() on rank 0; its message raised on every rank.
-  void check_factory() const;
+  /// check() of every factory on rank 0; the first message raised on every rank.
+  void check_factories() const;
   /// Point-to-point: @p bytes (given on rank @p from) arrive on rank @p to; empty elsewhere.
   std::vector<char> send_bytes(int from, int to, std::vector<char> bytes) const;
   void place_in_blocks();
   MPI_Comm comm_;
   int rank_ = 0, n_ranks_ = 1;
-  std::shared_ptr<const RveFactory<dim>> factory_;
+  std::vector<std::shared_ptr<const RveFactory<dim>>> factories_; ///< the first, then more_factories
   std::vector<QuadraturePoint> points_;
   std::vector<int> owner_;
   std::map<std::size_t, std::unique_ptr<Rve<dim>>> local_;

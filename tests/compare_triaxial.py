@@ -10,7 +10,9 @@ Usage: compare_triaxial.py HISTORY_H5 RVE_CSV SKIP_ROWS TOL [ROWS]
   cent apart, whose stress drops after a peak fall at different strains).
   SKIP_ROWS: rve.csv rows before the first one compared (F = I and the
   isotropic stage); ROWS: compare only the first ROWS rows (e.g. to the
-  peak); the others are printed."""
+  peak); the others are printed. With an ensemble on either side each row
+  also gives the standard error of the difference in q, sqrt(s_1^2/n_1 +
+  s_2^2/n_2) / |q_ref| (s the sample standard deviations of q over each list)."""
 import csv
 import sys
 
@@ -31,24 +33,31 @@ def read_run(path):
 
 
 def mean_of(paths):
-    """The row-wise mean over the comma-separated runs in PATHS (all of one length)."""
+    """The row-wise mean over the comma-separated runs in PATHS (all of one length), and at each
+    row the sample variance of q over the runs over their number (0 for one run)."""
     runs = [read_run(p) for p in paths.split(",")]
     if len({len(r) for r in runs}) != 1:
         print(f"FAIL: the runs of {paths} have {[len(r) for r in runs]} rows")
         sys.exit(1)
-    return [[sum(r[k][c] for r in runs) / len(runs) for c in range(9)] for k in range(len(runs[0]))]
-
-
-macro = mean_of(history)
-rows = [dict(zip(names, map(str, s))) for s in mean_of(rve_csv)]
-if len(rows) != len(macro) or not rows:
-    print(f"FAIL: {len(macro)} history.h5 steps vs {len(rows)} rve.csv rows")
-    sys.exit(1)
+    n = len(runs)
+    means = [[sum(r[k][c] for r in runs) / n for c in range(9)] for k in range(len(runs[0]))]
+    q_var = [sum((axial_and_q(r[k])[1] - axial_and_q(m)[1]) ** 2 for r in runs) / (n - 1) / n if n > 1 else 0.0
+             for k, m in enumerate(means)]
+    return means, q_var
 
 
 def axial_and_q(s):
     axial = s[4 * a]
     return axial, axial - 0.5 * (s[4 * lateral[0]] + s[4 * lateral[1]])
+
+
+macro, macro_q_var = mean_of(history)
+ref_means, ref_q_var = mean_of(rve_csv)
+rows = [dict(zip(names, map(str, s))) for s in ref_means]
+ensemble = "," in history or "," in rve_csv
+if len(rows) != len(macro) or not rows:
+    print(f"FAIL: {len(macro)} history.h5 steps vs {len(rows)} rve.csv rows")
+    sys.exit(1)
 
 
 fails, worst = 0, 0.0
@@ -61,8 +70,9 @@ for k, (m, r) in enumerate(zip(macro, rows), 1):
     fails += checked and not ok
     if checked:
         worst = max(worst, abs(da), abs(dq))
+    se = f" ± {100 * (macro_q_var[k - 1] + ref_q_var[k - 1]) ** 0.5 / abs(qr):.2f}" if ensemble else ""
     print(f"{('ok  ' if ok else 'FAIL') if checked else '    '} row {k}: axial {am:.6g} vs {ar:.6g} ({100 * da:+.2f} %), "
-          f"q {qm:.6g} vs {qr:.6g} ({100 * dq:+.2f} %), lateral {m[4 * lateral[0]]:.6g} {m[4 * lateral[1]]:.6g}")
+          f"q {qm:.6g} vs {qr:.6g} ({100 * dq:+.2f}{se} %), lateral {m[4 * lateral[0]]:.6g} {m[4 * lateral[1]]:.6g}")
 n = len(rows) if n_checked is None else min(n_checked, len(rows))
 print(f"{n - fails} of {n} rows checked within {tol}; largest difference {100 * worst:.2f} %")
 sys.exit(1 if fails else 0)

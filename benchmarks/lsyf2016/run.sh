@@ -23,15 +23,22 @@
 #   problem1_ensemble  the triaxial dynamic element and its single RVE at
 #              0.5 /s x 0.98, 1.02, 1.04 as well: the means of four runs each
 #              (results/problem1_ensemble.txt)
+#   problem4   problem 4 (issue 37): plane-strain biaxial compression of
+#              40 x 80 x 5 mm with lsyf_300 RVEs (problem4.prm) on the meshes
+#              4x8, 6x12 and 8x16 (one-point elements), local and nonlocal
+#              (Wendland's weight, R = 11.8 mm: the half-value width of
+#              [LSYF]'s bell with 2R = 13.5 mm), 2 ranks each; also 2x4
+#              local at 4 and 1 /s (the rate's effect); problem4.py's
+#              tables and PNGs
 #   tables     the comparison tables from what exists
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
 # result exists is not run again.
 #
-#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|tables|all
+#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem4|tables|all
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-[[ $# -eq 2 ]] || { sed -n '2,30p' "$0"; exit 2; }
+[[ $# -eq 2 ]] || { sed -n '2,38p' "$0"; exit 2; }
 build="$(cd "$1" && pwd)"
 what=$2
 results="$here/results"
@@ -227,12 +234,32 @@ problem1_tables() {
 }
 
 mkdir -p "$results"
+# problem4_case NAME CELLS_X CELLS_Y RADIUS [sed expression]
+problem4_case() {
+  run_macro "$1" "$here/problem4.prm" 2 \
+    "s/CELLS_X/$2/; s/CELLS_Y/$3/; s/RADIUS/$4/; s#packings/PACKING#packings/lsyf_300#; ${5:-}"
+}
+problem4() {
+  problem4_case problem4_2x4_rate4 2 4 0
+  problem4_case problem4_2x4_rate1 2 4 0 "s#set End time   = 0.015#set End time   = 0.06#; s#-4.8e-3 \* t / 0.015#-4.8e-3 * t / 0.06#"
+  local mesh
+  for mesh in 4x8 6x12 8x16; do
+    problem4_case "problem4_local_$mesh" "${mesh%x*}" "${mesh#*x}" 0
+    problem4_case "problem4_R11.8_$mesh" "${mesh%x*}" "${mesh#*x}" 0.0118
+  done
+  problem4_table
+}
+problem4_table() {
+  $py "$here/problem4.py" "$results" | tee "$results/problem4.txt"
+}
+
 case "$what" in
   wave) wave ;;
   problem1) problem1 ;;
   problem1_ensemble) problem1_ensemble ;;
   modulus) modulus ;;
-  tables) wave_table; problem1_tables; problem1_ensemble_table; modulus_table ;;
-  all) wave; problem1; modulus ;;
-  *) sed -n '2,30p' "$0"; exit 2 ;;
+  problem4) problem4 ;;
+  tables) wave_table; problem1_tables; problem1_ensemble_table; modulus_table; problem4_table ;;
+  all) wave; problem1; modulus; problem4 ;;
+  *) sed -n '2,38p' "$0"; exit 2 ;;
 esac

@@ -5,6 +5,13 @@ Usage:
   curves.py [--iso N] [--prepared P] show RVE_CSV                  the curve, one line per row
   curves.py [--iso N] [--prepared P] compare REF_CSV OTHER_CSV...  each OTHER against REF at REF's strains
 
+REF_CSV and each OTHER_CSV may be a comma-separated list of runs of one
+kind (an ensemble, e.g. of rates a few per cent apart): their mean at each
+of the first run's strains stands for them, and the table gains the
+standard error of the difference of the means, se = sqrt(s_ref^2/n_ref +
+s_other^2/n_other) relative to the reference ratio (s the sample standard
+deviation over a list; a single run adds nothing).
+
 The loading stage starts at the last row of the isotropic stage: row
 --iso N (N = 'Isotropic steps'; N = 0 is the packing as relaxed) or, for a
 continuous drive, the row before the first with drive_time_s > 0. Strain: triaxial e_a = 1 - F_aa/F_aa,ic (a the axial direction: the normal
@@ -103,24 +110,46 @@ def interp(rows, key, x):
     return rows[-1][key]
 
 
+def load_mean(paths):
+    """(kind, rows) of one run, or of the comma-separated runs in PATHS: at each strain of the first
+    run the mean over the runs of ratio, stress and ev, and n and the sample variance of the ratio."""
+    runs = [load(p) for p in paths.split(",")]
+    kind, first = runs[0]
+    if any(k != kind for k, _ in runs):
+        sys.exit(f"{paths}: runs of different kinds")
+    rows = []
+    for r in first:
+        values = {key: [interp(run, key, r["strain"]) for _, run in runs] for key in ("ratio", "stress", "ev")}
+        if any(v is None for vs in values.values() for v in vs):
+            break  # past the end of the shortest run
+        row = dict(strain=r["strain"], n=len(runs), **{key: sum(vs) / len(vs) for key, vs in values.items()})
+        row["ratio_var"] = (sum((v - row["ratio"]) ** 2 for v in values["ratio"]) / (len(runs) - 1)
+                            if len(runs) > 1 else 0.0)
+        rows.append(row)
+    return kind, rows
+
+
 def compare(ref_path, others):
-    kind, ref = load(ref_path)
+    kind, ref = load_mean(ref_path)
     peak = max(range(1, len(ref)), key=lambda k: ref[k]["ratio"])
     print(f"# reference {ref_path} ({kind}): peak ratio {ref[peak]['ratio']:.4f} at {ref[peak]['strain']:.4%}")
     for path in others:
-        _, other = load(path)
-        print(f"# {path}")
-        print("strain  ratio_ref  ratio  d_ratio  stress_ref  stress  d_stress  ev_ref  ev")
+        _, other = load_mean(path)
+        ensemble = ref[0]["n"] > 1 or other[0]["n"] > 1
+        print(f"# {path}" if not ensemble else
+              f"# the mean of {other[0]['n']} run(s) against the mean of {ref[0]['n']}: {path}")
+        print("strain  ratio_ref  ratio  d_ratio  stress_ref  stress  d_stress  ev_ref  ev" + ("  se" if ensemble else ""))
         upto, after = [], []
         for k, r in enumerate(ref[1:], start=1):
-            ratio, stress, ev = (interp(other, key, r["strain"]) for key in ("ratio", "stress", "ev"))
+            ratio, stress, ev, var = (interp(other, key, r["strain"]) for key in ("ratio", "stress", "ev", "ratio_var"))
             if ratio is None:
                 continue
             d_ratio = ratio / r["ratio"] - 1.0
             d_stress = stress / r["stress"] - 1.0
+            se = (r["ratio_var"] / r["n"] + var / other[0]["n"]) ** 0.5 / r["ratio"]
             (upto if k <= peak else after).append((abs(d_ratio), abs(d_stress), d_ratio))
             print(f"{r['strain']:.4f}  {r['ratio']:.4f}  {ratio:.4f}  {d_ratio:+.2%}  {r['stress']:.0f}  "
-                  f"{stress:.0f}  {d_stress:+.2%}  {r['ev']:+.5f}  {ev:+.5f}")
+                  f"{stress:.0f}  {d_stress:+.2%}  {r['ev']:+.5f}  {ev:+.5f}" + (f"  {se:.2%}" if ensemble else ""))
         if upto:
             print(f"max_abs_d_ratio_to_peak {max(u[0] for u in upto):.4f}")
             print(f"max_abs_d_stress_to_peak {max(u[1] for u in upto):.4f}")

@@ -13,18 +13,20 @@
 # Both sides run with 'Inner start' = affine (the default of explicit
 # dynamics; the references get it here); the keep results are in
 # results/inner_keep/.
-#   ensemble_lsyf_1000 the slowest triaxial run on lsyf_1000 as an ensemble:
-#                      four dynamic runs at 0.0651 /s x (1, 0.98, 1.02, 1.04)
-#                      against four references at 0.0163 /s x the same factors,
+#   ensemble_PACKING   the slowest triaxial run on PACKING as an ensemble:
+#                      dynamic runs at 0.0651 /s x F, F = 1, 0.98, 1.02, 1.04
+#                      (lsyf_1000) or 1, 0.96, 0.97, ..., 1.04 (small_3d, nine),
+#                      against references at 0.0163 /s x the same factors,
 #                      the means compared row by row (after the deviator's
 #                      plateau single runs drop at different strains)
 # Writes results/dynamic_bias/CASE/{dyn_*,reference*}/ and results/dynamic_bias*.txt.
 #
-#   dynamic_bias.sh BUILD [shear|triaxial_small_3d|triaxial_lsyf_1000|ensemble_lsyf_1000|all]   (default shear)
+#   dynamic_bias.sh BUILD [shear|triaxial_small_3d|triaxial_lsyf_1000|ensemble_lsyf_1000|ensemble_small_3d|all]
+#   (default shear)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-[[ $# -ge 1 && $# -le 2 ]] || { sed -n '2,23p' "$0"; exit 2; }
+[[ $# -ge 1 && $# -le 2 ]] || { sed -n '2,24p' "$0"; exit 2; }
 build="$(cd "$1" && pwd)"
 what="${2:-shear}"
 end_times=(0.0192 0.0768 0.3072)
@@ -90,11 +92,13 @@ triaxial() {
   } | tee "$here/results/dynamic_bias_triaxial_$packing.txt"
 }
 
+# ensemble PACKING F...: the factors F besides 1
 ensemble() {
   local packing=$1 out="$here/results/dynamic_bias/triaxial_$1"
   local edit="s#packings/small_3d#packings/$packing#" f t r
   local dyn=("$out/dyn_0.3072/out/history.h5") ref=("$out/reference/rve.csv") # made by 'triaxial PACKING'
-  for f in 0.98 1.02 1.04; do
+  shift
+  for f in "$@"; do
     t=$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.3072 / f}')
     r=$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.016276 * f}')
     run_dynamic "$out/dyn_$t" "$root/tests/dynamics_rve/triaxial_3d.prm" "$t" "$edit" &
@@ -105,8 +109,8 @@ ensemble() {
   done
   local IFS=,
   {
-    echo "# the slowest dynamic triaxial run ($packing, 0.0651 /s) as an ensemble of four rates 2-4 % apart,"
-    echo "# its mean against the mean of four continuous references at 0.0163 /s x the same factors"
+    echo "# the slowest dynamic triaxial run ($packing, 0.0651 /s) as an ensemble of ${#dyn[@]} rates (x 1, $*),"
+    echo "# its mean against the mean of ${#ref[@]} continuous references at 0.0163 /s x the same factors"
     /usr/bin/python3 "$root/tests/compare_triaxial.py" "${dyn[*]}" "${ref[*]}" 3 0.02 || true
     echo "## each reference against the references' mean (their own spread)"
     for r in "${ref[@]}"; do
@@ -123,7 +127,8 @@ case "$what" in
   shear) shear ;;
   triaxial_small_3d) triaxial small_3d ;;
   triaxial_lsyf_1000) triaxial lsyf_1000 ;;
-  ensemble_lsyf_1000) ensemble lsyf_1000 ;;
+  ensemble_lsyf_1000) ensemble lsyf_1000 0.98 1.02 1.04 ;;
+  ensemble_small_3d) ensemble small_3d 0.96 0.97 0.98 0.99 1.01 1.02 1.03 1.04 ;;
   all) shear; triaxial small_3d; triaxial lsyf_1000 ;;
-  *) sed -n '2,23p' "$0"; exit 2 ;;
+  *) sed -n '2,24p' "$0"; exit 2 ;;
 esac

@@ -12,8 +12,9 @@ low is already quasi-static (inertial number ~1e-5), so the spread is the
 sample's, not the rate's, and the curves at several rates are an ensemble
 of the same quasi-static response. This script compares the two ensembles:
 at every 0.25 % of strain the mean over rates of q/p (shear: tau/p) and its
-spread (max - min over the mean) for YADE and for the RVE, and the relative
-difference of the means; then the largest |difference| to the peak of
+spread (max - min over the mean) for YADE and for the RVE, the relative
+difference of the means and its standard error se = sqrt(s_Y^2/n_Y +
+s_R^2/n_R) / mean_Y (s the sample standard deviations over the members); then the largest |difference| to the peak of
 YADE's mean curve, the mean |difference| from there to --to, and YADE's
 own scatter (the largest difference between two of its rates to the same
 peak) beside it. Prints `name value unit` lines after the table. With --require the exit
@@ -48,8 +49,10 @@ def rve_ratio_curve(path, csv_file):
 
 
 def stats(values):
+    """The mean, the spread (max - min) over the mean, and the sample variance."""
     m = sum(values) / len(values)
-    return m, (max(values) - min(values)) / abs(m) if m else float("nan")
+    var = sum((v - m) ** 2 for v in values) / (len(values) - 1) if len(values) > 1 else 0.0
+    return m, (max(values) - min(values)) / abs(m) if m else float("nan"), var
 
 
 def main():
@@ -71,19 +74,20 @@ def main():
             break
         rows.append((e, y, r))
     name = "q/p" if a.path == "triaxial" else "tau/p"
-    print("| strain | YADE %s, mean of %d rates | YADE spread | RVE %s, mean of %d rates | RVE spread | RVE - YADE |"
-          % (name, len(yade), name, len(rve)))
-    print("|---|---|---|---|---|---|")
+    print("| strain | YADE %s, mean of %d rates | YADE spread | RVE %s, mean of %d rates | RVE spread | RVE - YADE "
+          "| se |" % (name, len(yade), name, len(rve)))
+    print("|---|---|---|---|---|---|---|")
     means = []
     for e, y, r in rows:
-        ym, ys = stats(y)
-        rm, rs = stats(r)
-        means.append((e, ym, rm))
-        print("| %.2f %% | %.4f | %.1f %% | %.4f | %.1f %% | %+.2f %% |" % (100 * e, ym, 100 * ys, rm, 100 * rs,
-                                                                      100 * (rm / ym - 1)))
+        ym, ys, yv = stats(y)
+        rm, rs, rv = stats(r)
+        se = (yv / len(y) + rv / len(r)) ** 0.5 / ym
+        means.append((e, ym, rm, se))
+        print("| %.2f %% | %.4f | %.1f %% | %.4f | %.1f %% | %+.2f %% | %.2f %% |"
+              % (100 * e, ym, 100 * ys, rm, 100 * rs, 100 * (rm / ym - 1), 100 * se))
     peak = max(range(len(means)), key=lambda i: means[i][1])
-    to_peak = [abs(rm / ym - 1) for _, ym, rm in means[:peak + 1]]
-    after = [abs(rm / ym - 1) for _, ym, rm in means[peak + 1:]]
+    to_peak = [abs(rm / ym - 1) for _, ym, rm, _ in means[:peak + 1]]
+    after = [abs(rm / ym - 1) for _, ym, rm, _ in means[peak + 1:]]
     own = 0.0
     for i in range(len(yade)):
         for j in range(i + 1, len(yade)):

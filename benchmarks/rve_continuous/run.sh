@@ -9,6 +9,10 @@
 #                          triaxial at 0.25 and 0.125 /s to 3 %
 #   run.sh BUILD slow_small_3d  small_3d triaxial and shear at 0.0625 and 0.03125 /s as
 #                          well: the rate ensemble beside YADE's (rate_ensemble.py)
+#   run.sh BUILD ensemble_small_3d  small_3d triaxial and shear at 0.25 /s x F for the
+#                          eight F in 0.96 ... 1.04, and YADE's periodic cell at the
+#                          same rates (yade_periodic/run_3d.sh): twelve members
+#                          with the four rates, for rate_ensemble.py
 #   run.sh BUILD rates_keep  rates and slow_small_3d with 'Inner start' = keep (the
 #                          continuous drive's default before session 24) into
 #                          results/inner_keep/; the held diagnostics start from them
@@ -30,7 +34,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-[[ $# -ge 2 ]] || { sed -n '2,21p' "$0"; exit 2; }
+[[ $# -ge 2 ]] || { sed -n '2,33p' "$0"; exit 2; }
 build="$(cd "$1" && pwd)"; what="$2"; force="${3:-}"
 rve="$build/dealii_app/rve_driver/fe2dem-rve"
 [[ -x "$rve" ]] || { echo "run.sh: no fe2dem-rve in $build (build it first)"; exit 2; }
@@ -90,6 +94,18 @@ slow_small_3d() {
   for path in triaxial shear; do
     for r in 0.0625 0.03125; do
       case_run "${path}_small_3d_${r}" "${path}_small_3d.prm" "$(rate $r)"
+    done
+  done
+}
+
+ensemble_factors=(0.96 0.97 0.98 0.99 1.01 1.02 1.03 1.04)
+ensemble_small_3d() {
+  local path f
+  for path in triaxial shear; do
+    for f in "${ensemble_factors[@]}"; do
+      case_run "${path}_small_3d_$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.25 * f}')" "${path}_small_3d.prm" \
+        "$(rate "$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.25 * f}')")"
+      "$root/benchmarks/yade_periodic/run_3d.sh" "small_3d:$path:$f" | grep -v '^small_3d_\|^lsyf_' || true
     done
   done
 }
@@ -198,12 +214,19 @@ rate_tables() {
     [[ ${#yade[@]} -gt 0 ]] && /usr/bin/python3 "$root/benchmarks/yade_periodic/compare_3d.py" "${yade[@]}" \
       --plot "$dir/vs_yade$suffix.png" --tables "$dir/vs_yade$suffix.md" > "$dir/vs_yade$suffix.txt"
   done
-  # small_3d as an ensemble: the RVE's mean over four rates against YADE's (rate_ensemble.py)
-  local y3="$root/benchmarks/yade_periodic/results_3d"
+  # small_3d as an ensemble: the RVE's mean over the four rates (and the eight of
+  # ensemble_small_3d where both codes ran them) against YADE's (rate_ensemble.py)
+  local y3="$root/benchmarks/yade_periodic/results_3d" f
   for path in triaxial shear; do
-    local ens=("$dir/${path}_small_3d_"{0.25,0.125,0.0625,0.03125}/rve.csv)
-    ls "${ens[@]}" > /dev/null 2>&1 && "$here/rate_ensemble.py" "$path" --yade "$y3/small_3d_${path}_rate"{1,0.5,0.25,0.125}.csv \
-      --rve "${ens[@]}" > "$dir/ensemble_small_3d_${path}.txt"
+    local ens=() yades=()
+    for f in 1 0.5 0.25 0.125 "${ensemble_factors[@]}"; do
+      r=$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.25 * f}')
+      [[ -f "$dir/${path}_small_3d_$r/rve.csv" && -f "$y3/small_3d_${path}_rate$f.csv" ]] || continue
+      ens+=("$dir/${path}_small_3d_$r/rve.csv")
+      yades+=("$y3/small_3d_${path}_rate$f.csv")
+    done
+    [[ ${#ens[@]} -ge 4 ]] && "$here/rate_ensemble.py" "$path" --yade "${yades[@]}" --rve "${ens[@]}" \
+      > "$dir/ensemble_small_3d_${path}.txt"
   done
   return 0
 }
@@ -255,12 +278,13 @@ case "$what" in
   rates) rates ;;
   rates_keep) rates_keep ;;
   slow_small_3d) slow_small_3d ;;
+  ensemble_small_3d) ensemble_small_3d ;;
   stepped) stepped ;;
   held) held ;;
   holds) holds ;;
   tables) tables ;;
   one_element) one_element ;;
   biaxial_2d) biaxial_2d ;;
-  all) rates; slow_small_3d; rates_keep; stepped; held; holds; one_element; biaxial_2d; tables ;;
-  *) sed -n '2,21p' "$0"; exit 2 ;;
+  all) rates; slow_small_3d; ensemble_small_3d; rates_keep; stepped; held; holds; one_element; biaxial_2d; tables ;;
+  *) sed -n '2,33p' "$0"; exit 2 ;;
 esac

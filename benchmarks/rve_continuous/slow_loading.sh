@@ -8,13 +8,19 @@
 #   small_3d    to 2 % in 8 steps; the reference and the relaxed-steps runs
 #               of macro_steps.sh (4, 8, 16 steps) are compared too
 #   lsyf_1000   to 5 % in 20 steps
-# Tables by curves.py --prepared into results/slow_loading_PACKING.txt.
-#   slow_loading.sh BUILD [small_3d|lsyf_1000|all]   (default all; about
-#   5 min for small_3d, 40 min of CPU for lsyf_1000 on the 2-core machine)
+#   ensemble_lsyf_1000  lsyf_1000 to 5 % as an ensemble: slow loading at
+#               0.25 /s x F against the reference at 0.0651 /s x F for the
+#               eight F in 0.96 ... 1.04 (F = 1 is the lsyf_1000 case's); after
+#               the peak single runs drop at different strains
+# Tables by curves.py --prepared (the ensemble: tests/compare_triaxial.py)
+# into results/slow_loading_PACKING.txt and slow_loading_ensemble_lsyf_1000.txt.
+#   slow_loading.sh BUILD [small_3d|lsyf_1000|ensemble_lsyf_1000|all]   (default
+#   all, which is not the ensemble; about 5 min for small_3d, 40 min of CPU for
+#   lsyf_1000 and 50 more for the ensemble on the 2-core machine)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-[[ $# -ge 1 && $# -le 2 ]] || { sed -n '2,13p' "$0"; exit 2; }
+[[ $# -ge 1 && $# -le 2 ]] || { sed -n '2,19p' "$0"; exit 2; }
 build="$(cd "$1" && pwd)"
 what="${2:-all}"
 out="$here/results/slow_loading"
@@ -67,4 +73,28 @@ if [[ "$what" == lsyf_1000 || "$what" == all ]]; then
       "$out"/lsyf_1000_{0.25,0.125}/out/summary.csv "$out/lsyf_1000_continuous_0.125/rve.csv"; } \
     > "$here/results/slow_loading_lsyf_1000.txt"
   cat "$here/results/slow_loading_lsyf_1000.txt"
+fi
+if [[ "$what" == ensemble_lsyf_1000 ]]; then
+  slow=("$out/lsyf_1000_0.25/out/summary.csv") ref=("$out/lsyf_1000_continuous_0.0651/rve.csv")
+  [[ -f "${slow[0]}" && -f "${ref[0]}" ]] || "$0" "$build" lsyf_1000 > /dev/null
+  for f in 0.96 0.97 0.98 0.99 1.01 1.02 1.03; do
+    s=$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.25 * f}')
+    r=$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.0651 * f}')
+    slow "$out/lsyf_1000_$s" "$s" lsyf_1000 20 0.05 &
+    reference "$out/lsyf_1000_continuous_$r" "$r" lsyf_1000 20 0.05
+    wait
+    slow+=("$out/lsyf_1000_$s/out/summary.csv")
+    ref+=("$out/lsyf_1000_continuous_$r/rve.csv")
+  done
+  curves() { local IFS=,; /usr/bin/python3 "$here/curves.py" --prepared 1e5 compare "$@"; }
+  join() { local IFS=,; echo "$*"; }
+  {
+    echo "# lsyf_1000 to 5 %: the mean of eight slow-loading runs (0.25 /s x 0.96 ... 1.04) against the mean"
+    echo "# of eight continuous references (0.0651 /s x the same factors); then the null case, the mean of"
+    echo "# four references (F = 0.99 ... 1.03) against the mean of the other four, and each slow-loading run alone"
+    curves "$(join "${ref[@]}")" "$(join "${slow[@]}")"
+    curves "$(join "${ref[@]:4:4}")" "$(join "${ref[@]:0:4}")" | sed 1d
+    for d in "${slow[@]}"; do curves "$(join "${ref[@]}")" "$d" | sed -n '2p;/^m[a-z_]* /p'; done
+  } > "$here/results/slow_loading_ensemble_lsyf_1000.txt"
+  cat "$here/results/slow_loading_ensemble_lsyf_1000.txt"
 fi

@@ -27,11 +27,44 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 namespace fe2dem::macro
 {
 using namespace dealii;
+
+namespace
+{
+/**
+ * The RVE of subsection Imperfection: its factory (prepared like the others)
+ * and the IP nearest to 'Point' (the lowest number among equally near ones);
+ * none if 'Packing' is empty. Says which IP on @p out.
+ */
+template <int dim>
+SeedRve<dim> make_seed_rve(const Parameters& prm, const std::vector<IpState<dim>>& ip,
+                           const RvePreparation& preparation, ConditionalOStream& out)
+{
+  if (!prm.imperfection.active())
+    return {};
+  RveParameters rve = prm.rve;
+  rve.packing = prm.imperfection.packing;
+  SeedRve<dim> seed;
+  seed.factory = prepare_rves<dim>(make_servo_rve_factory<dim>(rve.setup("none"), prm.material.history), preparation);
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t p = 0; p < ip.size(); ++p)
+  {
+    double d2 = 0.0;
+    for (unsigned int d = 0; d < dim; ++d)
+      d2 += (ip[p].position[d] - prm.imperfection.point[d]) * (ip[p].position[d] - prm.imperfection.point[d]);
+    if (d2 < nearest)
+      nearest = d2, seed.ip = p;
+  }
+  out << "imperfection: IP " << seed.ip << " at (" << ip[seed.ip].position << "), " << std::sqrt(nearest)
+      << " m from 'Point', gets the packing " << prm.imperfection.packing << std::endl;
+  return seed;
+}
+} // namespace
 
 template <int dim>
 ExplicitSolver<dim>::ExplicitSolver(const Parameters& parameters, bool resume)
@@ -177,6 +210,7 @@ void ExplicitSolver<dim>::make_constitutive_material(const std::string& checkpoi
   preparation.source = "subsection Material, 'Initial pressure' = " + std::to_string(m.initial_pressure);
   const std::shared_ptr<const fe2dem::RveFactory<dim>> factory = fe2dem::prepare_rves<dim>(
     fe2dem::make_servo_rve_factory<dim>(prm_.rve.setup("none"), m.history), preparation);
+  const SeedRve<dim> seed = make_seed_rve<dim>(prm_, ip_, preparation, pcout_);
   pcout_ << (checkpoint.empty() ? "creating " : "restoring ") << ip_.size() << " RVEs on " << n_ranks
          << " rank(s)"
          << (checkpoint.empty() && m.initial_pressure > 0.0
@@ -189,7 +223,7 @@ void ExplicitSolver<dim>::make_constitutive_material(const std::string& checkpoi
   try
   {
     material_ = std::make_unique<RveMaterial<dim>>(factory, ip_, m.stability_modulus, m.density,
-                                                   m.skip_tolerance, states, static_cast<int>(step_));
+                                                   m.skip_tolerance, states, static_cast<int>(step_), seed);
   }
   catch (const fe2dem::CouplerError& e)
   {

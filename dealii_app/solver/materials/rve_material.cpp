@@ -11,7 +11,7 @@ namespace fe2dem::macro
 namespace
 {
 template <int dim>
-std::vector<QuadraturePoint> quadrature_points(const std::vector<IpState<dim>>& points)
+std::vector<QuadraturePoint> quadrature_points(const std::vector<IpState<dim>>& points, const SeedRve<dim>& seed)
 {
   std::vector<QuadraturePoint> q(points.size());
   for (std::size_t p = 0; p < points.size(); ++p)
@@ -20,7 +20,17 @@ std::vector<QuadraturePoint> quadrature_points(const std::vector<IpState<dim>>& 
     for (unsigned int d = 0; d < dim; ++d)
       q[p].position[d] = points[p].position[d];
   }
+  if (seed.factory)
+    q.at(seed.ip).factory = 1;
   return q;
+}
+
+template <int dim>
+std::vector<std::shared_ptr<const RveFactory<dim>>> more_factories(const SeedRve<dim>& seed)
+{
+  if (seed.factory)
+    return {seed.factory};
+  return {};
 }
 } // namespace
 
@@ -28,10 +38,12 @@ template <int dim>
 RveMaterial<dim>::RveMaterial(std::shared_ptr<const RveFactory<dim>> factory,
                               const std::vector<IpState<dim>>& points, double stability_modulus,
                               double density, double skip_tolerance,
-                              const typename RvePool<dim>::StateSource& states, int load_step)
-  : pool_(states ? std::make_unique<RvePool<dim>>(MPI_COMM_WORLD, factory, quadrature_points(points),
-                                                  states, load_step)
-                 : std::make_unique<RvePool<dim>>(MPI_COMM_WORLD, factory, quadrature_points(points))),
+                              const typename RvePool<dim>::StateSource& states, int load_step,
+                              const SeedRve<dim>& seed)
+  : pool_(states ? std::make_unique<RvePool<dim>>(MPI_COMM_WORLD, factory, quadrature_points(points, seed),
+                                                  states, load_step, more_factories(seed))
+                 : std::make_unique<RvePool<dim>>(MPI_COMM_WORLD, factory, quadrature_points(points, seed),
+                                                  more_factories(seed))),
     wave_speed_(std::sqrt(stability_modulus / density))
 {
   pool_->set_skip_tolerance(skip_tolerance);

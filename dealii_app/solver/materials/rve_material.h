@@ -14,20 +14,29 @@
 
 namespace fe2dem::macro
 {
+/// One IP whose RVE another factory builds (subsection Imperfection); none if @p factory is null.
+template <int dim>
+struct SeedRve
+{
+  std::shared_ptr<const RveFactory<dim>> factory;
+  std::size_t ip = 0;
+};
+
 template <int dim>
 class RveMaterial : public Material<dim>
 {
 public:
   /**
    * Builds (or, with @p states, restores) the RVEs of @p points over
-   * MPI_COMM_WORLD.
+   * MPI_COMM_WORLD, all from @p factory but the one of @p seed.
    * @param stability_modulus, density  give the wave speed sqrt(M/rho)
    * @param skip_tolerance  RvePool::set_skip_tolerance
    */
   RveMaterial(std::shared_ptr<const RveFactory<dim>> factory,
               const std::vector<IpState<dim>>& points, double stability_modulus, double density,
               double skip_tolerance,
-              const typename RvePool<dim>::StateSource& states = nullptr, int load_step = 0);
+              const typename RvePool<dim>::StateSource& states = nullptr, int load_step = 0,
+              const SeedRve<dim>& seed = {});
 
   EvaluationCost evaluate(std::vector<IpState<dim>>& points) override;
   double wave_speed() const override { return wave_speed_; }

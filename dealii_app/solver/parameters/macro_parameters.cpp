@@ -584,6 +584,7 @@ void Parameters::declare_parameters(dealii::ParameterHandler& prm)
   MaterialParameters::declare_parameters(prm);
   FiniteElements::declare_parameters(prm);
   Nonlocal::declare_parameters(prm);
+  Imperfection::declare_parameters(prm);
   DynamicRelaxation::declare_parameters(prm);
   Dynamics::declare_parameters(prm);
   Loading::declare_parameters(prm);
@@ -608,6 +609,11 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
   material.parse_parameters(prm);
   elements.parse_parameters(prm);
   nonlocal.parse_parameters(prm);
+  imperfection.parse_parameters(prm, base.string(), geometry.dimension);
+  if (imperfection.active() && material.type != MaterialParameters::Type::rve)
+    throw std::runtime_error("subsection Imperfection: 'Packing' = " + prm.get({"Imperfection"}, "Packing") +
+                             " gives one RVE another packing, but subsection Material has 'Type' = " +
+                             prm.get({"Material"}, "Type") + "; use 'Type' = RVE, or leave 'Packing' empty");
   relaxation.parse_parameters(prm);
   dynamics.parse_parameters(prm);
   dynamics.resolve_scheme(material.type == MaterialParameters::Type::rve);
@@ -665,6 +671,19 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
     identity += "RVE/Template file content (FNV-1a 64) = " + file_hash(rve.template_file) + "\n" +
                 "RVE/Packing .rve.data content (FNV-1a 64) = " + file_hash(rve.packing + ".rve.data") + "\n" +
                 "RVE/Packing .vars content (FNV-1a 64) = " + file_hash(rve.packing + ".vars") + "\n";
+    if (imperfection.active())
+    {
+      require_file(imperfection.packing + ".rve.data", "subsection Imperfection: Packing (.rve.data)", file);
+      require_file(imperfection.packing + ".vars", "subsection Imperfection: Packing (.vars)", file);
+      if (imperfection.packing.find_first_of(" \t") != std::string::npos)
+        throw std::runtime_error(file + ": subsection Imperfection: 'Packing' = '" + imperfection.packing +
+                                 "' has a space, and LIGGGHTS splits its commands (read_data, include) "
+                                 "at spaces; use a path without spaces (e.g. a symbolic link)");
+      identity += "Imperfection/Packing .rve.data content (FNV-1a 64) = " +
+                  file_hash(imperfection.packing + ".rve.data") + "\n" +
+                  "Imperfection/Packing .vars content (FNV-1a 64) = " + file_hash(imperfection.packing + ".vars") +
+                  "\n";
+    }
   }
 }
 } // namespace fe2dem::macro

@@ -105,6 +105,21 @@ struct Nonlocal
   void parse_parameters(dealii::ParameterHandler& prm);
 };
 
+/**
+ * subsection Imperfection: one RVE built from another packing, e.g. the
+ * RVE's packing with particles removed, which seeds a shear band ([LSYF]
+ * §3.2, problem 3: 25 particles removed from one RVE).
+ */
+struct Imperfection
+{
+  std::string packing;           ///< packing prefix (absolute); empty: none
+  std::array<double, 3> point{}; ///< reference position [m]; the IP nearest to it gets the packing
+  bool active() const { return !packing.empty(); }
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  /// @param base the parameter file's folder (relative prefixes); @param dim the number of coordinates
+  void parse_parameters(dealii::ParameterHandler& prm, const std::string& base, unsigned int dim);
+};
+
 /// subsection Dynamic relaxation: physics.md (M3)-(M9).
 struct DynamicRelaxation
 {
@@ -273,6 +288,7 @@ struct Parameters
   MaterialParameters material;
   FiniteElements elements;
   Nonlocal nonlocal;
+  Imperfection imperfection;
   DynamicRelaxation relaxation;
   Dynamics dynamics;
   Loading loading;

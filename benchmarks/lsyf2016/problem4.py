@@ -1,0 +1,162 @@
+#!/usr/bin/python3
+"""[LSYF] problem 4 (issue 37): plane-strain biaxial compression, local
+against nonlocal on three meshes. Reads RESULTS/problem4_{local,R11.8}_MESH/
+and problem4_2x4_rate{4,1}/ (run.sh problem4), prints the tables of the
+README and writes into RESULTS:
+  problem4_curves.png   stress ratio against axial strain, every case
+  problem4_bands.png    the in-plane shear strain increment from 5 to 6 %
+                        at each IP (one-point elements: the element centres)
+  problem4.csv          per case and row: axial strain, sigma_a, ratio
+
+The specimen's stress ratio is the platens': sigma_a = |top force| / (W D)
+(nominal, W = 40 mm, D = 5 mm), the confining stress p_c = 416 kPa applied
+on the sides, ratio (sigma_a - p_c) / (sigma_a + p_c), the [LBS] measure
+|(s11 - s22)/(s11 + s22)| of the boundary stresses. (The volume average of
+sigma_11 is not p_c: the rough platens' shear tractions add to it.)
+
+Spread of a family: at each row from the peak of the family's mean curve
+to the end, (max - min) / mean of the ratio over its meshes. Band width:
+benchmarks/lbs2018/band_width.py on the increment of F's in-plane block
+(x, y) over the last four rows, at the IPs' reference positions.
+
+Usage: problem4.py RESULTS   (Debian's python3 with numpy, h5py, matplotlib)
+"""
+import csv
+import os
+import sys
+
+import h5py
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lbs2018"))
+import band_width as bw  # noqa: E402
+
+WIDTH, DEPTH, P_CONFINING = 0.04, 0.005, 4.16e5
+MESHES = ["4x8", "6x12", "8x16"]
+FAMILIES = {"local": "problem4_local_{}", "nonlocal R = 11.8 mm": "problem4_R11.8_{}"}
+BAND_ROWS = 4  # the band of the last BAND_ROWS rows' increment (1 % of axial strain)
+
+
+def curve(case_dir):
+    """(axial strain, sigma_a, ratio) arrays of one run, a row per load step, from the start."""
+    with open(os.path.join(case_dir, "out", "summary.csv")) as f:
+        rows = list(csv.DictReader(f))
+    eps = np.array([0.0] + [float(r["axial_strain"]) for r in rows])
+    sigma_a = np.array([P_CONFINING] + [abs(float(r["top_force"])) / (WIDTH * DEPTH) for r in rows])
+    return eps, sigma_a, (sigma_a - P_CONFINING) / (sigma_a + P_CONFINING)
+
+
+def band(case_dir):
+    """(reference positions [n, 2], gamma [n], width, angle) of the last BAND_ROWS rows' increment."""
+    with h5py.File(os.path.join(case_dir, "out", "history.h5"), "r") as h:
+        x = h["ip_position"][()][:, :2]
+        F = h["F"][()].reshape(len(h["step"]), -1, 3, 3)[:, :, :2, :2]
+    grad = np.einsum("nij,njk->nik", F[-1] - F[-1 - BAND_ROWS], np.linalg.inv(F[-1 - BAND_ROWS]))
+    gamma = bw.shear_strain(grad)
+    width, angle, _ = bw.band_width(x, gamma)
+    return x, gamma, width, angle
+
+
+def cost(case_dir):
+    """(wall s, RVEs, RVE solves, DEM steps summed over the RVEs) of one run."""
+    with open(os.path.join(case_dir, "out", "summary.csv")) as f:
+        rows = list(csv.DictReader(f))
+    with h5py.File(os.path.join(case_dir, "out", "history.h5"), "r") as h:
+        n_rve = h["ip_position"].shape[0]
+    wall = float(open(os.path.join(case_dir, "wall_s")).read())
+    return wall, n_rve, sum(int(r["rve_solves"]) for r in rows), sum(int(r["dem_steps"]) for r in rows)
+
+
+def spread(curves, cases):
+    """[(strain, (max - min)/mean)] from the peak of the mean ratio of `cases` to the end."""
+    n = min(len(curves[c][2]) for c in cases)
+    r = np.array([curves[c][2][:n] for c in cases])
+    peak = int(np.argmax(r.mean(axis=0)))
+    eps = curves[cases[0]][0]
+    return [(eps[k], (r[:, k].max() - r[:, k].min()) / r[:, k].mean()) for k in range(peak, n)]
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    results = sys.argv[1]
+    cases = {f"{fam} {m}": os.path.join(results, pat.format(m)) for fam, pat in FAMILIES.items() for m in MESHES}
+    cases.update({f"local 2x4, {r} /s": os.path.join(results, f"problem4_2x4_rate{r}") for r in (4, 1)})
+    done = {k: d for k, d in cases.items() if os.path.exists(os.path.join(d, "wall_s"))}
+    curves = {k: curve(d) for k, d in done.items()}
+
+    with open(os.path.join(results, "problem4.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["case", "axial_strain", "sigma_a_Pa", "stress_ratio"])
+        for k, (e, s, r) in curves.items():
+            w.writerows([k, f"{a:.5f}", f"{b:.1f}", f"{c:.5f}"] for a, b, c in zip(e, s, r))
+
+    print("## stress ratio of the platens, every 0.5 % (peak in bold)")
+    names = list(curves)
+    print("| axial strain | " + " | ".join(names) + " |")
+    print("|---" * (len(names) + 1) + "|")
+    n = max(len(c[0]) for c in curves.values())
+    for k in range(2, n, 2):
+        cells = []
+        for c in names:
+            e, _, r = curves[c]
+            cells.append("-" if k >= len(r) else (f"**{r[k]:.3f}**" if k == int(np.argmax(r)) else f"{r[k]:.3f}"))
+        print(f"| {100 * curves[names[0]][0][min(k, len(curves[names[0]][0]) - 1)]:.1f} % | " + " | ".join(cells) + " |")
+
+    print("\n## spread over the meshes from the peak of the family's mean: (max - min) / mean of the ratio")
+    print("| family | meshes | largest | mean | at the end |")
+    print("|---|---|---|---|---|")
+    for fam in FAMILIES:
+        have = [f"{fam} {m}" for m in MESHES if f"{fam} {m}" in curves]
+        if len(have) < 2:
+            continue
+        s = spread(curves, have)
+        print(f"| {fam} | {', '.join(h.split()[-1] for h in have)} | {100 * max(v for _, v in s):.1f} % | "
+              f"{100 * np.mean([v for _, v in s]):.1f} % | {100 * s[-1][1]:.1f} % |")
+    if {"local 2x4, 4 /s", "local 2x4, 1 /s"} <= set(curves):
+        r4, r1 = curves["local 2x4, 4 /s"][2], curves["local 2x4, 1 /s"][2]
+        d = np.abs(r4[1:] / r1[1:] - 1)
+        print(f"\nrate 4 against 1 /s (local 2x4): largest difference of the ratio {100 * d.max():.1f} %, "
+              f"mean {100 * d.mean():.1f} %")
+
+    print(f"\n## band width (band_width.py, increment over the last {BAND_ROWS} rows)")
+    print("| case | band width (mm) | band angle (deg from x) | gamma max |")
+    print("|---|---|---|---|")
+    fig, axes = plt.subplots(1, len(done), figsize=(2.2 * len(done), 4.6), squeeze=False)
+    for ax, (k, d) in zip(axes[0], done.items()):
+        x, g, width, angle = band(d)
+        print(f"| {k} | {1e3 * width:.1f} | {angle:.0f} | {g.max():.4f} |")
+        sc = ax.scatter(1e3 * x[:, 0], 1e3 * x[:, 1], c=g, s=3000 / len(x), marker="s", cmap="viridis")
+        ax.set_title(f"{k}\nwidth {1e3 * width:.1f} mm", fontsize=7)
+        ax.set_aspect("equal")
+        ax.set_xlim(0, 40)
+        ax.set_ylim(0, 80)
+        ax.tick_params(labelsize=6)
+        fig.colorbar(sc, ax=ax, shrink=0.6).ax.tick_params(labelsize=6)
+    fig.suptitle("in-plane shear strain increment, last 1 % of axial strain (x, y in mm)", fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(results, "problem4_bands.png"), dpi=120)
+
+    print("\n## cost (2 ranks on the 2-core VM, walls shared with other runs)")
+    print("| case | wall (s) | RVEs | RVE solves | DEM steps (all RVEs) |")
+    print("|---|---|---|---|---|")
+    for k, d in done.items():
+        wall, n_rve, solves, dem = cost(d)
+        print(f"| {k} | {wall:.0f} | {n_rve} | {solves} | {dem:.3g} |")
+
+    plt.figure(figsize=(6, 4))
+    for k, (e, _, r) in curves.items():
+        plt.plot(100 * e, r, "-" if k.startswith("local") else "--", label=k)
+    plt.xlabel("axial strain (%)")
+    plt.ylabel("stress ratio (platens)")
+    plt.legend(fontsize=6)
+    plt.tight_layout()
+    plt.savefig(os.path.join(results, "problem4_curves.png"), dpi=120)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

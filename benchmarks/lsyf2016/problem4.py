@@ -31,8 +31,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lbs2018"))
-import band_width as bw  # noqa: E402
+from band_tools import inplane_band, plot_curves  # noqa: E402
 
 WIDTH, DEPTH, P_CONFINING = 0.04, 0.005, 4.16e5
 MESHES = ["4x8", "6x12", "8x16"]
@@ -47,17 +46,6 @@ def curve(case_dir):
     eps = np.array([0.0] + [float(r["axial_strain"]) for r in rows])
     sigma_a = np.array([P_CONFINING] + [abs(float(r["top_force"])) / (WIDTH * DEPTH) for r in rows])
     return eps, sigma_a, (sigma_a - P_CONFINING) / (sigma_a + P_CONFINING)
-
-
-def band(case_dir):
-    """(reference positions [n, 2], gamma [n], width, angle) of the last BAND_ROWS rows' increment."""
-    with h5py.File(os.path.join(case_dir, "out", "history.h5"), "r") as h:
-        x = h["ip_position"][()][:, :2]
-        F = h["F"][()].reshape(len(h["step"]), -1, 3, 3)[:, :, :2, :2]
-    grad = np.einsum("nij,njk->nik", F[-1] - F[-1 - BAND_ROWS], np.linalg.inv(F[-1 - BAND_ROWS]))
-    gamma = bw.shear_strain(grad)
-    width, angle, _ = bw.band_width(x, gamma)
-    return x, gamma, width, angle
 
 
 def cost(case_dir):
@@ -127,7 +115,7 @@ def main():
     print("|---|---|---|---|")
     fig, axes = plt.subplots(1, len(done), figsize=(2.2 * len(done), 4.6), squeeze=False)
     for ax, (k, d) in zip(axes[0], done.items()):
-        x, g, width, angle = band(d)
+        x, g, width, angle, _ = inplane_band(os.path.join(d, "out", "history.h5"), BAND_ROWS)
         print(f"| {k} | {1e3 * width:.1f} | {angle:.0f} | {g.max():.4f} |")
         sc = ax.scatter(1e3 * x[:, 0], 1e3 * x[:, 1], c=g, s=3000 / len(x), marker="s", cmap="viridis")
         ax.set_title(f"{k}\nwidth {1e3 * width:.1f} mm", fontsize=7)
@@ -147,14 +135,8 @@ def main():
         wall, n_rve, solves, dem = cost(d)
         print(f"| {k} | {wall:.0f} | {n_rve} | {solves} | {dem:.3g} |")
 
-    plt.figure(figsize=(6, 4))
-    for k, (e, _, r) in curves.items():
-        plt.plot(100 * e, r, "-" if k.startswith("local") else "--", label=k)
-    plt.xlabel("axial strain (%)")
-    plt.ylabel("stress ratio (platens)")
-    plt.legend(fontsize=6)
-    plt.tight_layout()
-    plt.savefig(os.path.join(results, "problem4_curves.png"), dpi=120)
+    plot_curves({k: (e, r) for k, (e, _, r) in curves.items()}, "axial strain (%)", "stress ratio (platens)",
+                os.path.join(results, "problem4_curves.png"), dashed=lambda k: not k.startswith("local"))
     return 0
 
 

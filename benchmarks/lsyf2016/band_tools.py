@@ -1,0 +1,40 @@
+"""What problem3.py and problem4.py share: the in-plane band of a 3D run on
+one layer of one-point elements, and the curves' PNG (Debian's python3 with
+numpy, h5py, matplotlib)."""
+import os
+import sys
+
+import h5py
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lbs2018"))
+import band_width as bw  # noqa: E402
+
+
+def inplane_band(history, rows):
+    """(reference positions [n, 2], gamma [n], width, angle, middle) of the band in the increment of
+    F's in-plane (x, y) block over the last `rows` rows of history.h5 (benchmarks/lbs2018/
+    band_width.py: width the full width at half maximum of the profile across the band, angle
+    from x in degrees, middle the profile's peak position along the band's normal)."""
+    with h5py.File(history, "r") as h:
+        x = h["ip_position"][()][:, :2]
+        F = h["F"][()].reshape(len(h["step"]), -1, 3, 3)[:, :, :2, :2]
+    grad = np.einsum("nij,njk->nik", F[-1] - F[-1 - rows], np.linalg.inv(F[-1 - rows]))
+    gamma = bw.shear_strain(grad)
+    width, angle, (centres, means) = bw.band_width(x, gamma)
+    return x, gamma, width, angle, centres[int(np.argmax(means))]
+
+
+def plot_curves(curves, xlabel, ylabel, path, dashed=lambda label: False):
+    """One line per {label: (strain, value)}, strain in per cent on the axis."""
+    plt.figure(figsize=(6, 4))
+    for label, (x, y) in curves.items():
+        plt.plot(100 * np.asarray(x), y, "--" if dashed(label) else "-", label=label)
+    plt.xlabel(xlabel)
+    plt.ylabel(ylabel)
+    plt.legend(fontsize=6)
+    plt.tight_layout()
+    plt.savefig(path, dpi=120)

@@ -1,0 +1,125 @@
+#!/usr/bin/python3
+"""[LSYF] problem 3 (issue 37): simple shear with one weakened RVE, local
+and nonlocal. Reads RESULTS/problem3_R{0,0.015,0.025}/ (run.sh problem3),
+prints the tables of the README and writes into RESULTS:
+  problem3_curves.png  tau/p of the volume average against the shear strain
+  problem3_bands.png   the in-plane shear strain increment of the last 2 %
+                       of shear at each IP (element centres), the weak IP marked
+  problem3.csv         per case and IP at the last row: position, band
+                       membership, porosity, coordination, sliding fraction
+
+Stresses: the mean of the IPs' Cauchy stress (equal element volumes), tau =
+|sigma_12|, p = -tr(sigma)/3. The band: benchmarks/lbs2018/band_width.py on
+the increment of F's in-plane block over the last four rows (2 % of shear);
+inside = the IPs whose increment exceeds half the largest. Inside against
+outside: porosity 1 - solid fraction, coordination 2C/N, the fraction of
+sliding contacts, means over the IPs at the last row. (Particle rotations
+are not among the RVE statistics fe2dem records.)
+
+Usage: problem3.py RESULTS   (Debian's python3 with numpy, h5py, matplotlib)
+"""
+import csv
+import os
+import sys
+
+import h5py
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+from band_tools import inplane_band, plot_curves  # noqa: E402
+
+CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "problem3_R0.025"}
+WEAK_POINT = np.array([0.054, 0.025])  # problem3.prm, subsection Imperfection
+HEIGHT, SHEAR = 0.0506, 0.08           # the top's displacement is SHEAR * HEIGHT at the end
+BAND_ROWS = 4
+
+
+def read(case_dir):
+    """Everything of one run's history.h5 that the tables need."""
+    with h5py.File(os.path.join(case_dir, "out", "history.h5"), "r") as h:
+        d = {k: h[k][()] for k in ("ip_position", "F", "sigma", "packing_fraction", "coordination", "contacts",
+                                   "sliding_contacts", "step")}
+    n_rows = len(d["step"])
+    d["gamma_macro"] = SHEAR * np.arange(1, n_rows + 1) / n_rows  # load steps are equal in time
+    return d
+
+
+def curve(d):
+    """(shear strain, tau/p) of the mean stress, from the start."""
+    s = d["sigma"].mean(axis=1)  # [rows, 9]
+    p = -(s[:, 0] + s[:, 4] + s[:, 8]) / 3.0
+    return np.concatenate([[0.0], d["gamma_macro"]]), np.concatenate([[0.0], np.abs(s[:, 1]) / p])
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    results = sys.argv[1]
+    done = {k: read(os.path.join(results, c)) for k, c in CASES.items()
+            if os.path.exists(os.path.join(results, c, "wall_s"))}
+    if not done:
+        sys.exit("problem3.py: no finished run in " + results)
+    weak = int(np.argmin(np.linalg.norm(next(iter(done.values()))["ip_position"][:, :2] - WEAK_POINT, axis=1)))
+
+    print("## tau/p of the mean stress, every 1 % of shear")
+    print("| shear strain | " + " | ".join(done) + " |")
+    print("|---" * (len(done) + 1) + "|")
+    curves = {k: curve(d) for k, d in done.items()}
+    g0 = next(iter(curves.values()))[0]
+    for k in range(2, len(g0), 2):
+        print(f"| {100 * g0[k]:.0f} % | " + " | ".join(f"{c[1][k]:.3f}" if k < len(c[1]) else "-"
+                                                   for c in curves.values()) + " |")
+
+    print(f"\n## the band (increment over the last {BAND_ROWS} rows), and inside against outside at the end")
+    print("| case | band width (mm) | angle (deg from x) | band middle y (mm) | weak IP in the band | porosity in / out "
+          "| coordination in / out | sliding fraction in / out |")
+    print("|---|---|---|---|---|---|---|---|")
+    fig, axes = plt.subplots(len(done), 1, figsize=(7, 2.2 * len(done)), squeeze=False)
+    rows = []
+    for ax, (k, d) in zip(axes[:, 0], done.items()):
+        x, gamma, width, angle, middle = inplane_band(os.path.join(results, CASES[k], "out", "history.h5"),
+                                                      BAND_ROWS)
+        inside = gamma > 0.5 * gamma.max()
+        porosity = 1.0 - d["packing_fraction"][-1]
+        coordination = d["coordination"][-1]
+        sliding = d["sliding_contacts"][-1] / np.maximum(d["contacts"][-1], 1)
+
+        def in_out(v):
+            return f"{v[inside].mean():.3f} / {v[~inside].mean():.3f}"
+
+        print(f"| {k} | {1e3 * width:.1f} | {angle:.0f} | {1e3 * middle:.1f} | {'yes' if inside[weak] else 'no'} | "
+              f"{in_out(porosity)} | {in_out(coordination)} | {in_out(sliding)} |")
+        rows += [[k, f"{x[i, 0]:.5f}", f"{x[i, 1]:.5f}", int(inside[i]), f"{porosity[i]:.4f}",
+                  f"{coordination[i]:.3f}", f"{sliding[i]:.3f}"] for i in range(len(x))]
+        sc = ax.scatter(1e3 * x[:, 0], 1e3 * x[:, 1], c=gamma, s=160, marker="s", cmap="viridis")
+        ax.plot(1e3 * x[weak, 0], 1e3 * x[weak, 1], "rx")
+        ax.set_title(f"{k}: band width {1e3 * width:.1f} mm (x: the weak RVE)", fontsize=8)
+        ax.set_aspect("equal")
+        ax.set_xlim(0, 118)
+        ax.set_ylim(0, 50.6)
+        fig.colorbar(sc, ax=ax, shrink=0.8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(results, "problem3_bands.png"), dpi=110)
+    with open(os.path.join(results, "problem3.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["case", "x", "y", "in_band", "porosity", "coordination", "sliding_fraction"])
+        w.writerows(rows)
+
+    print("\n## cost (one rank each on the 2-core VM, walls shared with other runs)")
+    print("| case | wall (s) | RVEs | DEM steps (all RVEs) |")
+    print("|---|---|---|---|")
+    for k, c in CASES.items():
+        if k in done:
+            with open(os.path.join(results, c, "out", "summary.csv")) as f:
+                dem = sum(int(r["dem_steps"]) for r in csv.DictReader(f))
+            wall = float(open(os.path.join(results, c, "wall_s")).read())
+            print(f"| {k} | {wall:.0f} | {len(done[k]['ip_position'])} | {dem:.3g} |")
+
+    plot_curves(curves, "shear strain (%)", "tau/p of the mean stress", os.path.join(results, "problem3_curves.png"))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -30,17 +30,30 @@
 #              [LSYF]'s bell with 2R = 13.5 mm), 2 ranks each; also 2x4
 #              local at 4 and 1 /s (the rate's effect); problem4.py's
 #              tables and PNGs
+#   problem3   problem 3 (issue 37): simple shear of 118 x 50.6 x 12.7 mm on
+#              12x5x1 one-point elements with lsyf_300 RVEs, one of them
+#              lsyf_300_weak (problem3.prm), local and nonlocal with R = 15
+#              and 25 mm, one rank each; problem3.py's tables and PNGs
+#   problem4_rates  problem4.prm's RVE alone in plane strain
+#              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
+#   problem3 --full, problem4 --full, all --full   the same cases at the
+#              paper's size, lsyf_4096 RVEs (problem 3's weak one made by
+#              weaken_packing.py into results/full/), as SLURM jobs through
+#              scripts/slurm/fe2dem.sbatch (16 ranks each) if a SLURM
+#              controller answers, else the sbatch commands are printed;
+#              results/full/CASE/
 #   tables     the comparison tables from what exists
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
 # result exists is not run again.
 #
-#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem4|tables|all
+#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem4|problem4_rates|tables|all [--full]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-[[ $# -eq 2 ]] || { sed -n '2,38p' "$0"; exit 2; }
+[[ $# -eq 2 || ( $# -eq 3 && $3 == --full ) ]] || { sed -n '2,49p' "$0"; exit 2; }
 build="$(cd "$1" && pwd)"
 what=$2
+full=${3:-}
 results="$here/results"
 py=/usr/bin/python3
 rebase() { sed "s#\.\./\.\./rve_templates#$root/rve_templates#" "$@"; }
@@ -249,6 +262,46 @@ problem4() {
   done
   problem4_table
 }
+# submit_full NAME PRM [sed expression]: the case at the paper's size (lsyf_4096) in
+# results/full/NAME/ as a SLURM job of 16 ranks, or its sbatch command printed
+submit_full() {
+  local dir="$results/full/$1" prm=$2 edit=${3:-}
+  mkdir -p "$dir"
+  rebase "$prm" | sed "s#packings/lsyf_300_weak#packings/lsyf_4096_weak#; s#packings/lsyf_300\$#packings/lsyf_4096#; $edit" |
+    sed "s#$root/rve_templates/packings/lsyf_4096_weak#$results/full/lsyf_4096_weak#" > "$dir/macro.prm"
+  local cmd=(env FE2DEM="$build/dealii_app/solver/fe2dem" sbatch --ntasks=16 --chdir="$dir" --job-name="lsyf_$1"
+             "$root/scripts/slurm/fe2dem.sbatch" "$dir/macro.prm")
+  if scontrol ping 2> /dev/null | grep -q UP; then "${cmd[@]}"; else echo "no SLURM controller answers; submit with: ${cmd[*]}"; fi
+}
+problem3_full() {
+  [[ -f "$results/full/lsyf_4096_weak.rve.data" ]] || { mkdir -p "$results/full"
+    $py "$root/rve_templates/weaken_packing.py" "$root/rve_templates/packings/lsyf_4096" "$results/full/lsyf_4096_weak" 25; }
+  local r
+  for r in 0 0.015 0.025; do submit_full "problem3_R$r" "$here/problem3.prm" "s/RADIUS/$r/"; done
+}
+problem4_full() {
+  local mesh
+  for mesh in 4x8 6x12 8x16; do
+    submit_full "problem4_local_$mesh" "$here/problem4.prm" "s/CELLS_X/${mesh%x*}/; s/CELLS_Y/${mesh#*x}/; s/RADIUS/0/; s#packings/PACKING#packings/lsyf_4096#"
+    submit_full "problem4_R11.8_$mesh" "$here/problem4.prm" "s/CELLS_X/${mesh%x*}/; s/CELLS_Y/${mesh#*x}/; s/RADIUS/0.0118/; s#packings/PACKING#packings/lsyf_4096#"
+  done
+}
+problem3() {
+  local r
+  for r in 0 0.015 0.025; do
+    run_macro "problem3_R$r" "$here/problem3.prm" 1 "s/RADIUS/$r/"
+  done
+  problem3_table
+}
+problem3_table() {
+  $py "$here/problem3.py" "$results" | tee "$results/problem3.txt"
+}
+problem4_rates() {
+  local r
+  for r in 4 2 1 0.5; do
+    run_macro "problem4_element_rate$r" "$here/problem4_element.prm" 1 "s#ENDT#$(awk -v r="$r" 'BEGIN {print 0.08 / r}')#g"
+  done
+}
 problem4_table() {
   $py "$here/problem4.py" "$results" | tee "$results/problem4.txt"
 }
@@ -258,8 +311,10 @@ case "$what" in
   problem1) problem1 ;;
   problem1_ensemble) problem1_ensemble ;;
   modulus) modulus ;;
-  problem4) problem4 ;;
-  tables) wave_table; problem1_tables; problem1_ensemble_table; modulus_table; problem4_table ;;
-  all) wave; problem1; modulus; problem4 ;;
-  *) sed -n '2,38p' "$0"; exit 2 ;;
+  problem3) if [[ -n $full ]]; then problem3_full; else problem3; fi ;;
+  problem4) if [[ -n $full ]]; then problem4_full; else problem4; fi ;;
+  problem4_rates) problem4_rates ;;
+  tables) wave_table; problem1_tables; problem1_ensemble_table; modulus_table; problem3_table; problem4_table ;;
+  all) if [[ -n $full ]]; then problem3_full; problem4_full; else wave; problem1; modulus; problem3; problem4; fi ;;
+  *) sed -n '2,49p' "$0"; exit 2 ;;
 esac

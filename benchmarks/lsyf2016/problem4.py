@@ -15,7 +15,9 @@ on the sides, ratio (sigma_a - p_c) / (sigma_a + p_c), the [LBS] measure
 sigma_11 is not p_c: the rough platens' shear tractions add to it.)
 
 Spread of a family: at each row from the peak of the family's mean curve
-to the end, (max - min) / mean of the ratio over its meshes. Band width:
+to the end of its shortest run, (max - min) / mean of the ratio over its
+meshes. A run that stopped (an RVE lost a particle) counts with the rows
+it converged. Band width:
 benchmarks/lbs2018/band_width.py on the increment of F's in-plane block
 (x, y) over the last four rows, at the IPs' reference positions.
 
@@ -48,13 +50,21 @@ def curve(case_dir):
     return eps, sigma_a, (sigma_a - P_CONFINING) / (sigma_a + P_CONFINING)
 
 
+def stopped(case_dir):
+    """Whether fe2dem stopped this run at a failed RVE (its converged rows are kept)."""
+    log = os.path.join(case_dir, "log")
+    return os.path.exists(log) and "the run stopped after writing" in open(log).read()
+
+
 def cost(case_dir):
-    """(wall s, RVEs, RVE solves, DEM steps summed over the RVEs) of one run."""
+    """(wall s or where the run stopped, RVEs, RVE solves, DEM steps summed over the RVEs) of one run."""
     with open(os.path.join(case_dir, "out", "summary.csv")) as f:
         rows = list(csv.DictReader(f))
     with h5py.File(os.path.join(case_dir, "out", "history.h5"), "r") as h:
         n_rve = h["ip_position"].shape[0]
-    wall = float(open(os.path.join(case_dir, "wall_s")).read())
+    wall_file = os.path.join(case_dir, "wall_s")
+    wall = (f"{float(open(wall_file).read()):.0f}" if os.path.exists(wall_file)
+            else f"stopped after {100 * float(rows[-1]['axial_strain']):.2f} %")
     return wall, n_rve, sum(int(r["rve_solves"]) for r in rows), sum(int(r["dem_steps"]) for r in rows)
 
 
@@ -73,7 +83,8 @@ def main():
     results = sys.argv[1]
     cases = {f"{fam} {m}": os.path.join(results, pat.format(m)) for fam, pat in FAMILIES.items() for m in MESHES}
     cases.update({f"local 2x4, {r} /s": os.path.join(results, f"problem4_2x4_rate{r}") for r in (4, 1)})
-    done = {k: d for k, d in cases.items() if os.path.exists(os.path.join(d, "wall_s"))}
+    # finished runs, and runs that stopped (an RVE failed) with the rows they converged
+    done = {k: d for k, d in cases.items() if os.path.exists(os.path.join(d, "wall_s")) or stopped(d)}
     curves = {k: curve(d) for k, d in done.items()}
 
     with open(os.path.join(results, "problem4.csv"), "w", newline="") as f:
@@ -133,7 +144,7 @@ def main():
     print("|---|---|---|---|---|")
     for k, d in done.items():
         wall, n_rve, solves, dem = cost(d)
-        print(f"| {k} | {wall:.0f} | {n_rve} | {solves} | {dem:.3g} |")
+        print(f"| {k} | {wall} | {n_rve} | {solves} | {dem:.3g} |")
 
     plot_curves({k: (e, r) for k, (e, _, r) in curves.items()}, "axial strain (%)", "stress ratio (platens)",
                 os.path.join(results, "problem4_curves.png"), dashed=lambda k: not k.startswith("local"))

@@ -93,17 +93,17 @@ def main():
         for k, (e, s, r) in curves.items():
             w.writerows([k, f"{a:.5f}", f"{b:.1f}", f"{c:.5f}"] for a, b, c in zip(e, s, r))
 
-    print("## stress ratio of the platens, every 0.5 % (peak in bold)")
+    print("## stress ratio of the platens, every 0.25 % (peak in bold)")
     names = list(curves)
     print("| axial strain | " + " | ".join(names) + " |")
     print("|---" * (len(names) + 1) + "|")
     n = max(len(c[0]) for c in curves.values())
-    for k in range(2, n, 2):
+    for k in range(1, n):
         cells = []
         for c in names:
             e, _, r = curves[c]
             cells.append("-" if k >= len(r) else (f"**{r[k]:.3f}**" if k == int(np.argmax(r)) else f"{r[k]:.3f}"))
-        print(f"| {100 * curves[names[0]][0][min(k, len(curves[names[0]][0]) - 1)]:.1f} % | " + " | ".join(cells) + " |")
+        print(f"| {100 * curves[names[0]][0][min(k, len(curves[names[0]][0]) - 1)]:.2f} % | " + " | ".join(cells) + " |")
 
     print("\n## spread over the meshes from the peak of the family's mean: (max - min) / mean of the ratio")
     print("| family | meshes | largest | mean | at the end |")

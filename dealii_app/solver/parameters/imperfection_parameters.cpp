@@ -19,7 +19,8 @@ void Imperfection::declare_parameters(dealii::ParameterHandler& prm)
                     "pressure' like the others. Empty: every RVE from subsection RVE's 'Packing'.");
   prm.declare_entry("Point", "0, 0, 0", Anything(),
                     "x, y (3D: x, y, z) in m, reference configuration: the IP nearest to it (the "
-                    "lowest IP number among equally near ones) gets 'Packing'.");
+                    "lowest IP number among equally near ones) gets 'Packing'. Read only with a "
+                    "'Packing'.");
   prm.leave_subsection();
 }
 
@@ -31,6 +32,8 @@ void Imperfection::parse_parameters(dealii::ParameterHandler& prm, const std::st
   prm.leave_subsection();
   packing = prefix.find_first_not_of(" \t") == std::string::npos ? std::string() : resolve_path(base, prefix);
   point.fill(0.0);
+  if (!active())
+    return; // 'Point' is read only with a packing (its default has three numbers, also in 2D)
   std::istringstream in(text);
   std::string item;
   unsigned int n = 0;

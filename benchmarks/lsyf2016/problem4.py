@@ -62,9 +62,8 @@ def cost(case_dir):
         rows = list(csv.DictReader(f))
     with h5py.File(os.path.join(case_dir, "out", "history.h5"), "r") as h:
         n_rve = h["ip_position"].shape[0]
-    wall_file = os.path.join(case_dir, "wall_s")
-    wall = (f"{float(open(wall_file).read()):.0f}" if os.path.exists(wall_file)
-            else f"stopped after {100 * float(rows[-1]['axial_strain']):.2f} %")
+    wall = (f"stopped after {100 * float(rows[-1]['axial_strain']):.2f} %" if stopped(case_dir)
+            else f"{float(open(os.path.join(case_dir, 'wall_s')).read()):.0f}")
     return wall, n_rve, sum(int(r["rve_solves"]) for r in rows), sum(int(r["dem_steps"]) for r in rows)
 
 

@@ -100,11 +100,11 @@ slow_small_3d() {
 
 ensemble_factors=(0.96 0.97 0.98 0.99 1.01 1.02 1.03 1.04)
 ensemble_small_3d() {
-  local path f
+  local path f r
   for path in triaxial shear; do
     for f in "${ensemble_factors[@]}"; do
-      case_run "${path}_small_3d_$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.25 * f}')" "${path}_small_3d.prm" \
-        "$(rate "$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.25 * f}')")"
+      r=$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.25 * f}')
+      case_run "${path}_small_3d_$r" "${path}_small_3d.prm" "$(rate "$r")"
       "$root/benchmarks/yade_periodic/run_3d.sh" "small_3d:$path:$f" | grep -v '^small_3d_\|^lsyf_' || true
     done
   done

@@ -10,17 +10,18 @@
 #   lsyf_1000   to 5 % in 20 steps
 #   ensemble_lsyf_1000  lsyf_1000 to 5 % as an ensemble: slow loading at
 #               0.25 /s x F against the reference at 0.0651 /s x F for the
-#               eight F in 0.96 ... 1.04 (F = 1 is the lsyf_1000 case's); after
-#               the peak single runs drop at different strains
-# Tables by curves.py --prepared (the ensemble: tests/compare_triaxial.py)
-# into results/slow_loading_PACKING.txt and slow_loading_ensemble_lsyf_1000.txt.
+#               eight F = 0.96, 0.97, ..., 1.03 (F = 1 is the lsyf_1000
+#               case's); after the peak single runs drop at different strains
+# Tables by curves.py --prepared (the ensemble's means with their standard
+# error) into results/slow_loading_PACKING.txt and
+# slow_loading_ensemble_lsyf_1000.txt.
 #   slow_loading.sh BUILD [small_3d|lsyf_1000|ensemble_lsyf_1000|all]   (default
 #   all, which is not the ensemble; about 5 min for small_3d, 40 min of CPU for
 #   lsyf_1000 and 50 more for the ensemble on the 2-core machine)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-[[ $# -ge 1 && $# -le 2 ]] || { sed -n '2,19p' "$0"; exit 2; }
+[[ $# -ge 1 && $# -le 2 ]] || { sed -n '2,20p' "$0"; exit 2; }
 build="$(cd "$1" && pwd)"
 what="${2:-all}"
 out="$here/results/slow_loading"
@@ -86,10 +87,10 @@ if [[ "$what" == ensemble_lsyf_1000 ]]; then
     slow+=("$out/lsyf_1000_$s/out/summary.csv")
     ref+=("$out/lsyf_1000_continuous_$r/rve.csv")
   done
-  curves() { local IFS=,; /usr/bin/python3 "$here/curves.py" --prepared 1e5 compare "$@"; }
+  curves() { /usr/bin/python3 "$here/curves.py" --prepared 1e5 compare "$@"; }
   join() { local IFS=,; echo "$*"; }
   {
-    echo "# lsyf_1000 to 5 %: the mean of eight slow-loading runs (0.25 /s x 0.96 ... 1.04) against the mean"
+    echo "# lsyf_1000 to 5 %: the mean of eight slow-loading runs (0.25 /s x 0.96, 0.97, ..., 1.03) against the mean"
     echo "# of eight continuous references (0.0651 /s x the same factors); then the null case, the mean of"
     echo "# four references (F = 0.99 ... 1.03) against the mean of the other four, and each slow-loading run alone"
     curves "$(join "${ref[@]}")" "$(join "${slow[@]}")"

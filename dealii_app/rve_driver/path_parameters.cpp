@@ -43,6 +43,19 @@ void PathParameters::declare_parameters(dealii::ParameterHandler& prm)
   prm.declare_entry("Table file", "", Anything(),
                     "table: whitespace-separated rows 'F11 F12 F21 F22' (3D: the nine components "
                     "F11 F12 F13 F21 ... F33, row by row), one load step each; '#' starts a comment.");
+  prm.declare_entry("Table row time", "0", Double(0.0),
+                    "table: 0 (default): each row is one relaxed, servo-converged solve at its F "
+                    "(stepped). > 0: the rows are driven continuously, as 'Drive' = continuous "
+                    "drives the other paths: F moves at a constant rate from one row to the next "
+                    "over this physical time [s] (rounded up to whole 'Control interval's), in "
+                    "timed solves, no relaxation stop. With rows at equal times of a macro run "
+                    "(tests/history_to_table.py) this replays its deformation path at a chosen "
+                    "rate.");
+  prm.declare_entry("Table start", "packing", Selection("packing|isotropic stage"),
+                    "table: packing: the rows are F from the packing as read; isotropic stage: "
+                    "the isotropic stage to 'Pressure' runs first (as for the other paths) and a "
+                    "row F maps to F F_iso, as fe2dem's 'Initial pressure' maps the macro F of an "
+                    "RVE prepared at that pressure.");
   prm.declare_entry("Stress tolerance", "1e-2", Double(0.0),
                     "Relative tolerance of stress-controlled components.");
   prm.declare_entry("Axial direction", "z", dealii::Patterns::Selection("z|y"),
@@ -73,7 +86,8 @@ void PathParameters::declare_parameters(dealii::ParameterHandler& prm)
                     "(small_3d triaxial: up to -40 % in 0.5 % steps, -9 % in 0.1 % steps), "
                     "mostly because of the servo iterations of each solve (RVE 'Solve drive') "
                     "and the trials of the secant iterations. The isotropic stage and Type = "
-                    "isotropic and table are stepped whatever is set here.");
+                    "isotropic are stepped whatever is set here; Type = table is driven by "
+                    "'Table row time'.");
   prm.declare_entry("Hold rows", "0", Integer(0),
                     "Drive = continuous: every 'Hold rows'-th row is held at rest before it is "
                     "written: the drive stops, timed solves at the row's F (the servo acting at "
@@ -118,6 +132,8 @@ void PathParameters::parse_parameters(dealii::ParameterHandler& prm, const std::
   control_interval = prm.get_integer("Control interval");
   hold_rows = prm.get_integer("Hold rows");
   shear_normal_stress = prm.get_bool("Shear normal stress");
+  table_row_time = prm.get_double("Table row time");
+  table_after_isotropic = prm.get("Table start") == "isotropic stage";
   prm.leave_subsection();
   if (type == "isotropic" && (pressure <= 0.0 || isotropic_steps == 0))
     throw std::runtime_error("subsection Path: Type = isotropic needs 'Pressure' > 0 and "
@@ -130,9 +146,12 @@ void PathParameters::parse_parameters(dealii::ParameterHandler& prm, const std::
                              "Type = biaxial");
   if (stress_tolerance <= 0.0)
     throw std::runtime_error("subsection Path: 'Stress tolerance' must be > 0");
-  // isotropic and table paths have no loading stage to drive at a rate
-  continuous = continuous && type != "isotropic" && type != "table";
-  if (continuous && strain_rate <= 0.0)
+  // an isotropic path has no loading stage to drive at a rate; a table has its own row time
+  continuous = type == "table" ? table_row_time > 0.0 : continuous && type != "isotropic";
+  if (type == "table" && table_after_isotropic && (pressure <= 0.0 || isotropic_steps == 0))
+    throw std::runtime_error("subsection Path: 'Table start' = isotropic stage needs 'Pressure' > 0 "
+                             "and 'Isotropic steps' > 0 (or 'Table start' = packing)");
+  if (continuous && type != "table" && strain_rate <= 0.0)
     throw std::runtime_error("subsection Path: Drive = continuous needs 'Strain rate' > 0 (1/s), "
                              "not 0");
   if (shear_normal_stress && pressure <= 0.0)

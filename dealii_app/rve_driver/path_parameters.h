@@ -25,6 +25,11 @@ struct PathParameters
   std::string table_file;
   /// table: the rows of 'Table file' (dimension^2 values each), read and checked whole by parse.
   std::vector<std::vector<double>> table;
+  /// table: physical time per row [s]; > 0 drives the rows continuously, 0 steps them.
+  double table_row_time = 0.0;
+  /// table: the rows start after the isotropic stage and map to F_row F_iso (as fe2dem's
+  /// 'Initial pressure' maps the macro F of a prepared RVE), not from the packing as read.
+  bool table_after_isotropic = false;
   double stress_tolerance;
   bool free_shear;           ///< also hold sigma12 = 0 through F12 (as the macro biaxial test)
   bool axial_y = false;      ///< triaxial (3D): compress along y instead of z (fe2dem's vertical axis)
@@ -32,7 +37,7 @@ struct PathParameters
   unsigned int max_stress_iterations;
   /// continuous (default): the loading stage at a constant strain rate, as timed
   /// solves; stepped: each load step relaxed and servo-converged at its F ([LBS]).
-  /// False for isotropic and table paths, which have no loading stage.
+  /// False for isotropic paths and stepped tables ('Table row time' = 0).
   bool continuous = true;
   double strain_rate;             ///< continuous: axial compression or shear rate [1/s]
   unsigned int control_interval;  ///< continuous: DEM steps per timed solve (stress control update)

@@ -371,13 +371,23 @@ void RvePathRunner<dim>::run_shear_stage()
 
 // The rows were read and checked whole by Parameters::parse, before the RVE existed.
 template <int dim>
+typename RvePathRunner<dim>::Matrix RvePathRunner<dim>::table_F(std::size_t k) const
+{
+  const std::vector<double>& row = prm_.path.table.at(k);
+  Matrix F{};
+  for (int i = 0; i < dim; ++i)
+    for (int j = 0; j < dim; ++j)
+      for (int m = 0; m < dim; ++m)
+        F[i * dim + j] += row[i * dim + m] * F_table_start_[m * dim + j];
+  return F;
+}
+
+template <int dim>
 void RvePathRunner<dim>::run_table()
 {
-  for (const std::vector<double>& row : prm_.path.table)
+  for (std::size_t k = 0; k < prm_.path.table.size(); ++k)
   {
-    Matrix F;
-    std::copy(row.begin(), row.end(), F.begin());
-    solve(F);
+    solve(table_F(k));
     write_row(rve_->response(), 0);
   }
 }
@@ -392,7 +402,17 @@ void RvePathRunner<dim>::run()
   write_row(rve_->response(), 0); // the relaxed packing at F = I
   const std::string& type = prm_.path.type;
   if (type == "table")
-    run_table();
+  {
+    if (prm_.path.table_after_isotropic)
+    {
+      run_isotropic_stage();
+      F_table_start_ = F_;
+    }
+    if (prm_.path.continuous)
+      run_continuous_table();
+    else
+      run_table();
+  }
   else
   {
     run_isotropic_stage();

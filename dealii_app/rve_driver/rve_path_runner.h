@@ -55,7 +55,13 @@ private:
   void run_continuous_stage();
   /// The stress-controlled components of the loading stage and their targets.
   std::pair<std::vector<int>, std::vector<double>> loading_controls() const;
+  /// Type = table, stepped: one relaxed solve per row.
   void run_table();
+  /// Type = table with 'Table row time' > 0: the rows at a constant rate of F between them.
+  void run_continuous_table();
+  /// The F of table row @p k: the row itself, or row F_iso with 'Table start' = isotropic stage.
+  Matrix table_F(std::size_t k) const;
+  Matrix F_table_start_ = identity<dim>(); ///< F_iso, or I
   /**
    * Finds x with stress(solve(make_F(x))) = target by secant steps.
    * @param slope  estimate of d stress / dx on entry, updated on exit

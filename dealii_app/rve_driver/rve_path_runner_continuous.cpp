@@ -103,9 +103,46 @@ void RvePathRunner<dim>::run_continuous_stage()
   set_budget(SolveBudget::converge());
 }
 
+// A table driven continuously: F moves at a constant rate from each row to
+// the next over 'Table row time', in timed solves of 'Control interval' DEM
+// steps; every component of F is prescribed, nothing is stress controlled.
+// With the rows of a macro run's history at equal times this is the
+// quasi-static RVE along the very deformation path of that run (issue 35:
+// the one-element dynamic triaxial element also shears through its
+// bilinear modes, which neither the triaxial path with shear stretches 0
+// nor with 'Free shear' follows).
+template <int dim>
+void RvePathRunner<dim>::run_continuous_table()
+{
+  const long n = prm_.path.control_interval;
+  const double interval_time = n * prm_.rve.time_step;
+  const long per_row =
+    std::max(1L, std::lround(std::ceil(prm_.path.table_row_time / interval_time - 1e-9)));
+  std::cout << "continuous table: " << per_row << " timed solves of " << n << " DEM steps per row ("
+            << per_row * interval_time << " s)" << std::endl;
+  set_budget(SolveBudget::timed(n));
+  Matrix F_from = F_;
+  for (std::size_t k = 0; k < prm_.path.table.size(); ++k)
+  {
+    const Matrix F_to = table_F(k);
+    for (long j = 1; j <= per_row; ++j)
+    {
+      const double s = static_cast<double>(j) / per_row;
+      F_ = (1.0 - s) * F_from + s * F_to;
+      solve(F_);
+      drive_time_ += interval_time;
+    }
+    F_ = F_from = F_to;
+    write_row(rve_->response(), 0);
+  }
+  set_budget(SolveBudget::converge());
+}
+
 // The rest of the class is instantiated in rve_path_runner.cpp.
 template void RvePathRunner<2>::run_continuous_stage();
 template void RvePathRunner<3>::run_continuous_stage();
+template void RvePathRunner<2>::run_continuous_table();
+template void RvePathRunner<3>::run_continuous_table();
 template std::pair<std::vector<int>, std::vector<double>> RvePathRunner<2>::loading_controls() const;
 template std::pair<std::vector<int>, std::vector<double>> RvePathRunner<3>::loading_controls() const;
 } // namespace fe2dem::rve_driver

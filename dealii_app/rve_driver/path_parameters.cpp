@@ -220,7 +220,14 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
   output_directory = resolve_path(base, prm.get("Output directory"));
   particle_dumps_every = prm.get_integer("Particle dumps every");
   rve.parse_parameters(prm, base);
-  path.parse_parameters(prm, base);
+  try
+  {
+    path.parse_parameters(prm, base);
+  }
+  catch (const std::runtime_error& e) // name the file, as the checks below do
+  {
+    throw std::runtime_error(file + ": " + e.what());
+  }
   // stepped and table paths relax every solve to rest, also with 'Solve
   // drive' = continuous (whose held rows stay within 0.4 % of the continuous
   // path with keep on both sides, 2.2 % with affine: benchmarks/rve_continuous)

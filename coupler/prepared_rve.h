@@ -21,8 +21,11 @@
 
 #include "rve.h"
 
+#include <functional>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace fe2dem
 {
@@ -40,6 +43,26 @@ struct RvePreparation
   /// Where the user set these (named in error messages), e.g. "subsection Material, 'Initial pressure'".
   std::string source = "RVE preparation";
 };
+
+/// Told the state at the end of each stage of a preparation: the response, the stage
+/// (1 ... stages), its trial solves and their DEM steps.
+template <int dim>
+using PreparationObserver =
+  std::function<void(const RveResponse<dim>& response, unsigned int stage, unsigned int trials, long dem_steps)>;
+
+/**
+ * The preparation of prepare_rves() on one new RVE of @p factory, whose
+ * create() it calls: the stretch F0 reached and the committed state there,
+ * which @p factory's restore() turns into the very RVE every prepared RVE
+ * of fe2dem wraps (fe2dem-rve's 'Isotropic control' = prepared starts its
+ * paths from it, bitwise the same state).
+ * @param observer called at the end of each stage (may be empty)
+ * @throws std::runtime_error as prepare_rves()' create().
+ */
+template <int dim>
+std::pair<typename Rve<dim>::Tensor, std::vector<char>>
+prepare_rve_state(const RveFactory<dim>& factory, const RvePreparation& preparation,
+                  const PreparationObserver<dim>& observer = {});
 
 /**
  * @return @p factory itself if @p preparation.pressure is 0, else a factory

@@ -34,6 +34,8 @@ struct PathParameters
   bool free_shear;           ///< also hold sigma12 = 0 through F12 (as the macro biaxial test)
   bool axial_y = false;      ///< triaxial (3D): compress along y instead of z (fe2dem's vertical axis)
   bool isotropic_components; ///< isotropic stage: sigma11 = sigma22 = -p through F11, F22 (F12 = 0)
+  /// isotropic stage by fe2dem's preparation (prepare_rve_state): its very state
+  bool isotropic_prepared = false;
   unsigned int max_stress_iterations;
   /// continuous (default): the loading stage at a constant strain rate, as timed
   /// solves; stepped: each load step relaxed and servo-converged at its F ([LBS]).

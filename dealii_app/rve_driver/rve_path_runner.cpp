@@ -1,5 +1,6 @@
 #include "rve_path_runner.h"
 
+#include "prepared_rve.h"
 #include "servo_rve_factory.h"
 
 #include <mpi.h>
@@ -16,13 +17,13 @@ namespace fe2dem::rve_driver
 {
 namespace
 {
-/// The RVE, after its packing and template were checked (in a child process: LIGGGHTS would exit(1)).
+/// The RVEs' factory, after its packing and template were checked (in a child process: LIGGGHTS would exit(1)).
 template <int dim>
-std::unique_ptr<Rve<dim>> make_rve(const RveSetup& setup)
+std::shared_ptr<const RveFactory<dim>> make_factory(const RveSetup& setup)
 {
-  const auto factory = make_servo_rve_factory<dim>(setup, HistoryMode::continuous);
+  std::shared_ptr<const RveFactory<dim>> factory = make_servo_rve_factory<dim>(setup, HistoryMode::continuous);
   factory->check();
-  return factory->create();
+  return factory;
 }
 
 /// Row-major indices of the diagonal and of the upper off-diagonal components.
@@ -54,7 +55,7 @@ template <int dim>
 RvePathRunner<dim>::RvePathRunner(const Parameters& parameters)
   : axial(dim == 2 ? 3 : parameters.path.axial_y ? 4 : 8),
     lateral(parameters.path.axial_y ? std::array<int, 2>{{0, 8}} : std::array<int, 2>{{0, 4}}),
-    prm_(parameters), rve_(make_rve<dim>(parameters.rve.setup("none")))
+    prm_(parameters), factory_(make_factory<dim>(parameters.rve.setup("none"))), rve_(factory_->create())
 {
   // A first guess of the stiffness d sigma / d F; the secant iteration
   // corrects it after the first trial. 2D: ~ k_n (stress in N/m). 3D (Pa):
@@ -247,6 +248,25 @@ void RvePathRunner<dim>::run_isotropic_stage()
 {
   const std::vector<int> diag = diagonal<dim>(), shear = upper<dim>();
   const std::string diag_names = dim == 2 ? "sigma11, sigma22" : "sigma11, sigma22, sigma33";
+  if (prm_.path.isotropic_prepared)
+  {
+    // fe2dem's preparation on a new RVE of the same factory (as fresh as
+    // rve_, whose row 0 is written), a row per stage, then its state restored
+    RvePreparation preparation;
+    preparation.pressure = prm_.path.pressure;
+    preparation.stages = prm_.path.isotropic_steps;
+    preparation.tolerance = prm_.path.stress_tolerance;
+    preparation.max_iterations = prm_.path.max_stress_iterations;
+    preparation.source = "subsection Path, 'Isotropic control' = prepared";
+    const auto [F0, state] = prepare_rve_state<dim>(
+      *factory_, preparation, [&](const Response& r, unsigned int, unsigned int trials, long dem_steps) {
+        dem_steps_in_step_ = dem_steps;
+        write_row(r, trials);
+      });
+    rve_ = factory_->restore(state);
+    F_ = macro_to_rve<dim>(F0);
+    return;
+  }
   if (prm_.path.free_shear || prm_.path.isotropic_components)
   {
     // every diagonal component at -p, with Free shear every shear component at 0

@@ -91,6 +91,7 @@ private:
   void set_budget(const SolveBudget& budget);
 
   const Parameters& prm_;
+  std::shared_ptr<const RveFactory<dim>> factory_; ///< made the RVE; restores it after 'prepared'
   std::unique_ptr<Rve<dim>> rve_;
   SolveBudget budget_; ///< of the solves from now on
   std::unique_ptr<OutputLock> output_lock_; ///< this run owns the output directory

@@ -2,11 +2,12 @@
 # The dynamic one-element triaxial test against the quasi-static RVE along
 # its very kinematics (issue 35, item 5). The one-point element with
 # rollers and pressure faces also shears through its bilinear modes (F12,
-# F13, F31, F32 up to 5e-4), which neither fe2dem-rve's triaxial path with
-# shear stretches 0 nor with 'Free shear' follows. Here fe2dem-rve replays
-# the element's F history (tests/history_to_table.py, Type = table,
-# 'Table row time', 'Table start' = isotropic stage), so that only the
-# driver differs:
+# F13, F31, F32 up to 5e-4), which fe2dem-rve's triaxial path with shear
+# stretches 0 does not follow. Here fe2dem-rve replays the element's F
+# history (tests/history_to_table.py, Type = table, 'Table row time',
+# 'Table start' = isotropic stage) from the same prepared state
+# (triaxial_continuous_rve.prm: 'Isotropic control' = prepared), so that
+# only the driver differs:
 #   dyn          tests/dynamics_rve/triaxial_3d.prm on small_3d at 0.065 /s
 #                (0.3072 s, 40 rows), also with the RVE 'Check interval' =
 #                100 and 25 (1 and 4 checks per 100-step macro step; 50: 2)

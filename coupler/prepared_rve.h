@@ -53,9 +53,9 @@ using PreparationObserver =
 /**
  * The preparation of prepare_rves() on one new RVE of @p factory, whose
  * create() it calls: the stretch F0 reached and the committed state there,
- * which @p factory's restore() turns into the very RVE every prepared RVE
- * of fe2dem wraps (fe2dem-rve's 'Isotropic control' = prepared starts its
- * paths from it, bitwise the same state).
+ * which @p factory's restore() turns into the RVE every prepared RVE of
+ * fe2dem wraps (fe2dem-rve's 'Isotropic control' = prepared restores its
+ * RVE from these very bytes).
  * @param observer called at the end of each stage (may be empty)
  * @throws std::runtime_error as prepare_rves()' create().
  */

@@ -389,7 +389,6 @@ void RvePathRunner<dim>::run_shear_stage()
   }
 }
 
-// The rows were read and checked whole by Parameters::parse, before the RVE existed.
 template <int dim>
 typename RvePathRunner<dim>::Matrix RvePathRunner<dim>::table_F(std::size_t k) const
 {
@@ -402,6 +401,7 @@ typename RvePathRunner<dim>::Matrix RvePathRunner<dim>::table_F(std::size_t k) c
   return F;
 }
 
+// The rows were read and checked whole by Parameters::parse, before the RVE existed.
 template <int dim>
 void RvePathRunner<dim>::run_table()
 {

@@ -39,7 +39,7 @@ BAND_ROWS = 4
 def read(case_dir):
     """Everything of one run's history.h5 that the tables need."""
     with h5py.File(os.path.join(case_dir, "out", "history.h5"), "r") as h:
-        d = {k: h[k][()] for k in ("ip_position", "F", "sigma", "packing_fraction", "coordination", "contacts",
+        d = {k: h[k][()] for k in ("ip_position", "sigma", "packing_fraction", "coordination", "contacts",
                                    "sliding_contacts", "step")}
     n_rows = len(d["step"])
     d["gamma_macro"] = SHEAR * np.arange(1, n_rows + 1) / n_rows  # load steps are equal in time

@@ -25,15 +25,13 @@ root="$(cd "$here/../.." && pwd)"
 build="$(cd "$1" && pwd)"
 out="$here/results/replay_dynamic"
 mkdir -p "$out"
-rebase() { sed "s#\.\./\.\./rve_templates#$root/rve_templates#" "$@"; }
 
 # dynamic DIR END_TIME LOAD_STEPS [sed expression]: the rate stays 0.02 / 0.3072 s
 dynamic() {
   local dir=$out/$1 t=$2 n=$3 edit=${4:-}
   [[ -f "$dir/out/history.h5" ]] && return
   mkdir -p "$dir"
-  rebase "$root/tests/dynamics_rve/triaxial_3d.prm" \
-    | sed "s#-2e-4 \* t / END_TIME#-2e-4 * t / 0.3072#; s#END_TIME#$t#g; s/set Load steps = 8/set Load steps = $n/; $edit" > "$dir/macro.prm"
+  "$root/tests/rve_continuous/cases.sh" dynamic "$t" "$n" | sed "$edit" > "$dir/macro.prm"
   (cd "$dir" && "$build/dealii_app/solver/fe2dem" macro.prm > log)
   rm -rf "$dir/out/checkpoints" "$dir"/out/*.vtu "$dir"/out/*.pvd
 }
@@ -43,10 +41,7 @@ replay() {
   [[ -f "$dir/rve.csv" ]] && return
   mkdir -p "$dir"
   /usr/bin/python3 "$root/tests/history_to_table.py" "$from/out/history.h5" 0 "$dir/table.txt" > /dev/null
-  rebase "$root/tests/dynamics_rve/triaxial_continuous_rve.prm" \
-    | sed -e 's/^\( *set Type *=\).*/\1 table/' -e '/^ *set Drive *=/d' -e "s/^\( *set Control interval *=\).*/\1 $ci/" \
-          -e "s#^\( *set Strain rate *=.*\)#  set Table file        = table.txt\n  set Table start       = isotropic stage\n  set Table row time    = $row_time#" \
-    | sed "0,/^subsection RVE/s//subsection RVE\n  set Inner start = affine\n  set Check interval = $check/" > "$dir/case.prm"
+  "$root/tests/rve_continuous/cases.sh" replay table.txt "$row_time" "$ci" "$check" > "$dir/case.prm"
   (cd "$dir" && "$build/dealii_app/rve_driver/fe2dem-rve" case.prm --output-directory . > log)
 }
 

@@ -13,17 +13,11 @@
 set -euo pipefail
 fe2dem=$1 rve=$2 src=$3 out=$4
 rm -rf "$out"; mkdir -p "$out/dynamic" "$out/replay"
-rebase() { sed "s#\.\./\.\./rve_templates#$src/../rve_templates#" "$@"; }
-rebase "$src/dynamics_rve/triaxial_3d.prm" \
-  | sed 's#-2e-4 \* t / END_TIME#-2e-4 * t / 0.3072#; s#END_TIME#0.00096#g; s/set Load steps = 8/set Load steps = 12/' \
-  > "$out/dynamic/macro.prm"
+"$src/rve_continuous/cases.sh" dynamic 0.00096 12 > "$out/dynamic/macro.prm"
 (cd "$out/dynamic" && "$fe2dem" macro.prm > log)
 grep -q "step 8e-05 (100 DEM steps" "$out/dynamic/log" || { echo "FAIL: not 100 DEM steps per macro step"; exit 1; }
 /usr/bin/python3 "$src/history_to_table.py" "$out/dynamic/out/history.h5" 0 "$out/replay/table.txt"
-rebase "$src/dynamics_rve/triaxial_continuous_rve.prm" \
-  | sed -e 's/^\( *set Type *=\).*/\1 table/' -e '/^ *set Drive *=/d' -e 's/^\( *set Control interval *=\).*/\1 100/' \
-        -e "s#^\( *set Strain rate *=.*\)#  set Table file        = $out/replay/table.txt\n  set Table start       = isotropic stage\n  set Table row time    = 8e-5#" \
-  | sed "0,/^subsection RVE/s//subsection RVE\n  set Inner start = affine/" > "$out/replay/case.prm"
+"$src/rve_continuous/cases.sh" replay "$out/replay/table.txt" 8e-5 100 > "$out/replay/case.prm"
 grep -q "Isotropic control = prepared" "$out/replay/case.prm" || { echo "FAIL: the reference is not prepared"; exit 1; }
 "$rve" "$out/replay/case.prm" --output-directory "$out/replay" > "$out/replay/log"
 /usr/bin/python3 - "$out/dynamic/out/history.h5" "$out/replay/rve.csv" <<'PY'

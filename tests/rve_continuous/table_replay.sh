@@ -21,9 +21,7 @@ rebase "$src/dynamics_rve/triaxial_continuous_rve.prm" | sed 's#RATE#0.25#; s#^\
   | sed "0,/^subsection RVE/s//subsection RVE\n  set Inner start = affine/" > "$out/path/case.prm"
 "$rve" "$out/path/case.prm" --output-directory "$out/path" > "$out/path/log"
 /usr/bin/python3 "$src/history_to_table.py" "$out/path/rve.csv" 2 "$out/replay/table.txt"
-sed -e 's/^\( *set Type *=\).*/\1 table/' -e '/^ *set Drive *=/d' \
-    -e "s#^\( *set Strain rate *=.*\)#\1\n  set Table file        = $out/replay/table.txt\n  set Table start       = isotropic stage\n  set Table row time    = 0.005#" \
-    "$out/path/case.prm" > "$out/replay/case.prm"
+"$src/rve_continuous/cases.sh" replay "$out/replay/table.txt" 0.005 150 > "$out/replay/case.prm"
 "$rve" "$out/replay/case.prm" --output-directory "$out/replay" > "$out/replay/log"
 grep -q "continuous table: 42 timed solves of 150 DEM steps per row" "$out/replay/log" \
   || { echo "FAIL: the replay did not run as a continuous table"; grep "continuous" "$out/replay/log"; exit 1; }

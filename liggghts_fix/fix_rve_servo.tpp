@@ -321,7 +321,18 @@ int FixRveServo<dim>::local_index(int tag) const
   const int i = atom->map(tag);
   if (i < 0 || i >= atom->nlocal)
   {
+    // LIGGGHTS deletes an atom that leaves a fixed ('f') box at reneighbouring.
     std::string msg = "particle id " + std::to_string(tag) + " was lost";
+    for (int k = 0; k < dim; ++k)
+      if (domain->boundary[k][0] == 1 || domain->boundary[k][1] == 1)
+      {
+        msg += std::string(": LIGGGHTS deletes a particle that leaves a fixed box, and the template's "
+                           "box is fixed ('f' in ") + "xyz"[k] +
+               "), so a frame deformed beyond the data file's box loses particles; shrink-wrap it "
+               "with 'boundary m m " + (dim == 3 ? "m" : "p") + "' (as rve_templates/rve_setup_" +
+               std::to_string(dim) + "d.liggghts)";
+        break;
+      }
     error->one(FLERR, msg.c_str());
   }
   return i;

@@ -30,17 +30,16 @@ root="$(cd "$here/../.." && pwd)"
 build="$(cd "$1" && pwd)"
 what="${2:-shear}"
 end_times=(0.0192 0.0768 0.3072)
+source "$here/../common.sh"
 rebase() { sed "s#\.\./\.\./rve_templates#$root/rve_templates#" "$@"; }
 
 # run_reference DIR PRM RATE [sed expression]: fe2dem-rve continuous at RATE
 run_reference() {
   local dir=$1 prm=$2 rate=$3 edit=${4:-}
-  [[ -f "$dir/rve.csv" ]] && return
-  mkdir -p "$dir"
   # the reference runs the RVE the dynamic run has: 'Inner start' = auto is
   # affine in explicit dynamics, keep in fe2dem-rve
-  rebase "$prm" | sed "s/^\( *set Strain rate *=\).*/\1 $rate/; /^ *set Inner start *=/d; $edit" \
-    | sed "0,/^subsection RVE/s//subsection RVE\n  set Inner start = affine/" > "$dir/case.prm"
+  needs_run "$dir/case.prm" "$dir/rve.csv" < <(rebase "$prm" | sed "s/^\( *set Strain rate *=\).*/\1 $rate/; /^ *set Inner start *=/d; $edit" \
+    | sed "0,/^subsection RVE/s//subsection RVE\n  set Inner start = affine/") || return 0
   local t0=$SECONDS
   "$build/dealii_app/rve_driver/fe2dem-rve" "$dir/case.prm" --output-directory "$dir" > "$dir/run.log"
   echo "reference $dir: $((SECONDS - t0)) s"
@@ -48,9 +47,7 @@ run_reference() {
 # run_dynamic DIR PRM END_TIME [sed expression]
 run_dynamic() {
   local dir=$1 prm=$2 end_time=$3 edit=${4:-}
-  [[ -f "$dir/out/history.h5" ]] && return
-  mkdir -p "$dir"
-  rebase "$prm" | sed "s#END_TIME#$end_time#g; $edit" > "$dir/macro.prm"
+  needs_run "$dir/macro.prm" "$dir/out/history.h5" < <(rebase "$prm" | sed "s#END_TIME#$end_time#g; $edit") || return 0
   local t0=$SECONDS
   (cd "$dir" && "$build/dealii_app/solver/fe2dem" macro.prm > log)
   rm -rf "$dir/out/checkpoints" "$dir"/out/*.vtu "$dir"/out/*.pvd

@@ -11,18 +11,17 @@ root="$(cd "$here/../.." && pwd)"
 build="$(cd "$1" && pwd)"; force="${2:-}"
 out="$here/results/macro_steps"
 mkdir -p "$out"
+source "$here/../common.sh"
 rebase() { sed -e "s|\.\./\.\./|$root/|g" "$@"; }
 ref="$out/continuous_0.065"
-if [[ ! -f "$ref/rve.csv" || "$force" == "--force" ]]; then
-  mkdir -p "$ref"
-  rebase "$root/tests/dynamics_rve/triaxial_continuous_rve.prm" | sed 's/RATE/0.065/' > "$ref/case.prm"
+[[ "$force" == "--force" ]] && rm -f "$ref/rve.csv"
+if needs_run "$ref/case.prm" "$ref/rve.csv" < <(rebase "$root/tests/dynamics_rve/triaxial_continuous_rve.prm" | sed 's/RATE/0.065/'); then
   "$build/dealii_app/rve_driver/fe2dem-rve" "$ref/case.prm" --output-directory "$ref" > "$ref/run.log" 2>&1
 fi
 for n in 4 8 16; do
   d="$out/steps_$n"
-  if [[ ! -f "$d/summary.csv" || "$force" == "--force" ]]; then
-    rm -rf "$d"; mkdir -p "$d"
-    rebase "$here/one_element_qs_small_3d.prm" | sed "s/LOAD_STEPS/$n/; s|^set Output directory.*|set Output directory = $d|" > "$d/case.prm"
+  [[ "$force" == "--force" ]] && rm -f "$d/summary.csv"
+  if needs_run "$d/case.prm" "$d/summary.csv" < <(rebase "$here/one_element_qs_small_3d.prm" | sed "s/LOAD_STEPS/$n/; s|^set Output directory.*|set Output directory = $d|"); then
     t0=$SECONDS
     "$build/dealii_app/solver/fe2dem" "$d/case.prm" > "$d/run.log" 2>&1
     echo "steps_$n: $((SECONDS - t0)) s"

@@ -25,16 +25,15 @@ root="$(cd "$here/../.." && pwd)"
 build="$(cd "$1" && pwd)"
 what="${2:-all}"
 out="$here/results/slow_loading"
+source "$here/../common.sh"
 rebase() { sed "s#\.\./\.\./rve_templates#$root/rve_templates#" "$@"; }
 
 # reference DIR RATE PACKING STEPS STRAIN: fe2dem-rve's continuous drive
 reference() {
   local dir=$1 rate=$2 packing=$3 steps=$4 strain=$5
-  [[ -f "$dir/rve.csv" ]] && return
-  mkdir -p "$dir"
-  rebase "$root/tests/dynamics_rve/triaxial_continuous_rve.prm" | sed "s#RATE#$rate#; \
+  needs_run "$dir/case.prm" "$dir/rve.csv" < <(rebase "$root/tests/dynamics_rve/triaxial_continuous_rve.prm" | sed "s#RATE#$rate#; \
     s#packings/small_3d#packings/$packing#; s#^\( *set Loading steps *=\).*#\1 $steps#; \
-    s#^\( *set Axial strain *=\).*#\1 $strain#" > "$dir/case.prm"
+    s#^\( *set Axial strain *=\).*#\1 $strain#") || return 0
   local t0=$SECONDS
   "$build/dealii_app/rve_driver/fe2dem-rve" "$dir/case.prm" --output-directory "$dir" > "$dir/run.log"
   echo "reference $dir: $((SECONDS - t0)) s"
@@ -42,11 +41,9 @@ reference() {
 # slow DIR RATE PACKING STEPS STRAIN: fe2dem, one element, the default scheme
 slow() {
   local dir=$1 rate=$2 packing=$3 steps=$4 strain=$5
-  [[ -f "$dir/out/summary.csv" ]] && return
-  mkdir -p "$dir"
-  rebase "$root/tests/slow_loading/triaxial_3d.prm" | sed "s#RATE#$rate#; \
+  needs_run "$dir/macro.prm" "$dir/out/summary.csv" < <(rebase "$root/tests/slow_loading/triaxial_3d.prm" | sed "s#RATE#$rate#; \
     s#packings/small_3d#packings/$packing#; s#^\( *set Load steps *=\).*#\1 $steps#; \
-    s#-2e-4 \* t#-$(/usr/bin/python3 -c "print($strain * 0.01)") * t#" > "$dir/macro.prm"
+    s#-2e-4 \* t#-$(/usr/bin/python3 -c "print($strain * 0.01)") * t#") || return 0
   local t0=$SECONDS
   (cd "$dir" && "$build/dealii_app/solver/fe2dem" macro.prm > log)
   rm -rf "$dir/out/checkpoints" "$dir"/out/*.vtu "$dir"/out/*.pvd # kept: summary, history, energy

@@ -8,8 +8,8 @@
  *  - RveFault::step_budget: the next solve runs under a cap of one DEM step
  *    (SolveBudget::max_steps), so the fix stops it as over budget;
  *  - RveFault::liggghts_error: the next solve gets F11 + 1e10 (a solve
- *    increment d_eps11 + 1e10), so LIGGGHTS loses particles and raises an
- *    error.
+ *    increment d_eps11 + 1e10), so the templates' shrink-wrapped box
+ *    outgrows LIGGGHTS' neighbour bins and LIGGGHTS raises an error.
  *
  * Otherwise every call is forwarded unchanged (bitwise the same results).
  * RvePool::inject_fault wraps the RVE it is asked to fault.

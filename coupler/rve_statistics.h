@@ -8,8 +8,9 @@
  *
  * Columns: kind (tensor: dim x dim, row-major {11, 12, 21, 22}; scalar:
  * double; count: integer), name (history.h5 dataset), unit, description,
- * source (an expression on `r`, the fix's FixRveServo<2>::Result; expanded
- * only on the LIGGGHTS side of the coupler).
+ * source (an expression on `r`, the fix's FixRveServo<dim>::Result, or on
+ * `fix_`, the fix itself; expanded only on the LIGGGHTS side of the
+ * coupler, ServoRve::response() in servo_rve.cpp).
  * Conventions: tension positive; stresses in `stress_unit`: force per length
  * (N/m) in 2D, per area (Pa) in 3D.
  */
@@ -42,7 +43,10 @@
   X(count, membrane_steps, "1", "particle-steps of the last solve with a membrane contact",          \
     r.membrane_steps)                                                                                 \
   X(scalar, F_check_error, "1", "|F_check - F|/|F|: F measured on the frame against the imposed F",   \
-    fe2dem::frobenius(r.F_check - r.F) / fe2dem::frobenius(r.F))
+    fe2dem::frobenius(r.F_check - r.F) / fe2dem::frobenius(r.F))                                      \
+  X(scalar, mean_rotation, "rad",                                                                     \
+    "mean |rotation| of the inner particles accumulated since the RVE was built (from its spin)",    \
+    fix_->mean_rotation())
 // clang-format on
 
 namespace fe2dem

@@ -344,14 +344,16 @@ const RveResponse<dim>& ServoRve<dim>::solve_increment(const Tensor& d_eps)
 template <int dim>
 const RveResponse<dim>& ServoRve<dim>::response() const
 {
-  response_ = to_response<dim>(result());
+  response_ = to_response<dim>(result(), *fix_);
   response_.converged = last_converged_;
   return response_;
 }
 
 template <int dim>
-RveResponse<dim> to_response(const typename LAMMPS_NS::FixRveServo<dim>::Result& r)
+RveResponse<dim> to_response(const typename LAMMPS_NS::FixRveServo<dim>::Result& r,
+                             const LAMMPS_NS::FixRveServo<dim>& fix)
 {
+  const LAMMPS_NS::FixRveServo<dim>* const fix_ = &fix; // the name the statistics' sources use
   RveResponse<dim> out;
   out.F = r.F;
   out.P = r.P;
@@ -514,6 +516,8 @@ std::unique_ptr<RveFactory<3>> make_servo_rve_factory<3>(const RveSetup& setup, 
 
 template class ServoRve<2>;
 template class ServoRve<3>;
-template RveResponse<2> to_response<2>(const LAMMPS_NS::FixRveServo<2>::Result&);
-template RveResponse<3> to_response<3>(const LAMMPS_NS::FixRveServo<3>::Result&);
+template RveResponse<2> to_response<2>(const LAMMPS_NS::FixRveServo<2>::Result&,
+                                       const LAMMPS_NS::FixRveServo<2>&);
+template RveResponse<3> to_response<3>(const LAMMPS_NS::FixRveServo<3>::Result&,
+                                       const LAMMPS_NS::FixRveServo<3>&);
 } // namespace fe2dem

@@ -162,7 +162,12 @@ private:
   Result continuous_result_;            ///< its result (result())
 };
 
-/// rve_to_macro: the fix's result as the macro side sees it (rve_statistics.h).
+/**
+ * rve_to_macro: a result @p r of @p fix as the macro side sees it, with the
+ * statistics of rve_statistics.h (their sources read @p r and the fix's
+ * current state).
+ */
 template <int dim>
-RveResponse<dim> to_response(const typename LAMMPS_NS::FixRveServo<dim>::Result& r);
+RveResponse<dim> to_response(const typename LAMMPS_NS::FixRveServo<dim>::Result& r,
+                             const LAMMPS_NS::FixRveServo<dim>& fix);
 } // namespace fe2dem

@@ -226,6 +226,15 @@ public:
   /// Current rotation of each frame particle, in frame order.
   const std::vector<Rotation>& frame_rotations() const { return motion_.rotations(); }
   /**
+   * Mean over the inner particles of |theta|, theta the rotation each has
+   * accumulated since the fix was set up on the packing (the integral of
+   * its spin, midpoint rule; an angle in 2D, a rotation vector's length in
+   * 3D), in rad. Restart files carry it, so it survives commits, rollbacks
+   * and moves between ranks; a difference between two solves is the
+   * rotation over that part of the path.
+   */
+  double mean_rotation() const;
+  /**
    * The convergence test of a quasi-static solve (relaxed by the relaxation
    * criterion, frame balanced within servo_tol) on the state the last check
    * homogenised: for drivers that end timed solves themselves, e.g. a frame
@@ -403,6 +412,7 @@ private:
   std::string contacts_compute_id_;
   std::vector<fe2dem::Contact<dim>> contacts_;
   std::vector<int> tag_to_dense_;
+  std::vector<Rotation> rotation_; ///< accumulated rotation per dense index (inner particles)
   int n_particles_ = 0;           ///< RVE bodies (frame images counted separately)
   std::vector<int> physical_of_;  ///< dense index -> dense index of its physical particle
   int n_inner_ = 0;

@@ -162,6 +162,7 @@ void FixRveServo<dim>::post_create()
   tag_to_dense_.assign(max_tag + 1, -1);
   for (int i = 0; i < atom->nlocal; ++i)
     tag_to_dense_[atom->tag[i]] = i;
+  rotation_.assign(n_particles_, Rotation{});
   // Area (3D: volume) inside the periodic cell: inner particles whole, one
   // image per group, one corner.
   auto size_of = [](double r) {

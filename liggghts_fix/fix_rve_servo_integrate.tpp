@@ -21,7 +21,8 @@ using namespace FixConst;
 using namespace fe2dem;
 
 // Velocity Verlet half step of the inner particles (velocity and spin),
-// followed in the same pass by the position update when @p drift is set.
+// followed in the same pass by the position update when @p drift is set,
+// and then the accumulated rotation by the half-step spin (midpoint rule).
 template <int dim>
 void FixRveServo<dim>::half_kick_inner(bool drift)
 {
@@ -47,6 +48,12 @@ void FixRveServo<dim>::half_kick_inner(bool drift)
         omega[i][a] = 0.0;
       else
         omega[i][a] += dtf_ / inertia_of(i) * torque[i][a];
+    }
+    if (drift)
+    {
+      Rotation& theta = rotation_[tag_to_dense_[atom->tag[i]]];
+      for (int c = 0; c < n_spin; ++c)
+        theta[c] += dtv_ * omega[i][spin_index<dim>(c)];
     }
   }
 }

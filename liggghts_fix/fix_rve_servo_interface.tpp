@@ -157,9 +157,27 @@ double FixRveServo<dim>::compute_vector(int n)
 }
 
 template <int dim>
+double FixRveServo<dim>::mean_rotation() const
+{
+  double sum = 0.0;
+  int n = 0;
+  for (int i = 0; i < atom->nlocal; ++i)
+    if (is_inner(i))
+    {
+      const Rotation& theta = rotation_[tag_to_dense_[atom->tag[i]]];
+      double sq = 0.0;
+      for (int c = 0; c < n_spin; ++c)
+        sq += theta[c] * theta[c];
+      sum += std::sqrt(sq);
+      ++n;
+    }
+  return n > 0 ? sum / n : 0.0;
+}
+
+template <int dim>
 double FixRveServo<dim>::memory_usage()
 {
   const double nq = static_cast<double>(frame_.particles.size());
   return nq * (sizeof(fe2dem::FrameParticle<dim>) + 6 * sizeof(Vector) + 4 * sizeof(Rotation)) +
-         contacts_.capacity() * sizeof(fe2dem::Contact<dim>) + tag_to_dense_.capacity() * sizeof(int);
+         contacts_.capacity() * sizeof(fe2dem::Contact<dim>) + tag_to_dense_.capacity() * sizeof(int) + rotation_.capacity() * sizeof(Rotation);
 }

@@ -21,8 +21,9 @@ namespace fe2dem_fix_detail
 {
 constexpr std::uint32_t state_magic = 0x46453244; // "FE2D"
 // 2: Result::membrane_steps; 3: image flags; 4: the timed servo's drifts
-// (version 3 records are still read: no drift, as they were made without it).
-constexpr std::uint32_t state_version = 4;
+// (version 3 records are still read: no drift, as they were made without it);
+// 5: the inner particles' accumulated rotations (older records: zero).
+constexpr std::uint32_t state_version = 5;
 } // namespace fe2dem_fix_detail
 
 // The one list of everything a restart must carry, used to write and read.
@@ -69,6 +70,10 @@ void FixRveServo<dim>::transfer_state(Stream& s, std::uint32_t version)
     s.io(servo_.drift_theta_pair);
     s.io(servo_.drift_theta_corner);
   }
+  if (version >= 5)
+    s.io(rotation_);
+  else
+    rotation_.assign(n_particles_, Rotation{});
 }
 
 template <int dim>

@@ -23,7 +23,8 @@ Outputs (``--outdir``, default: the input's folder):
                      left->right, corner (Lx,0), right edge bottom->top, corner
                      (Lx,Ly), top edge right->left, corner (0,Ly), left edge
                      top->bottom. Non-periodic box = cell + 50 % of Lx (Ly) on
-                     each side in x (y); z = the input's slab.
+                     each side in x (y), the minimum of the template's
+                     shrink-wrapped box; z = the input's slab.
 ``NAME.vars``        LIGGGHTS include file (rve_Lx, rve_Ly, rve_natoms, ...).
 ``NAME.stats.txt``   ``key value`` lines (also printed).
 ``NAME.frame.txt``   frame particles: rve id, role, pair, periodic id, X, Y, R.

@@ -20,7 +20,8 @@ Outputs (``--outdir``, default: the input's folder):
                     type 2 = frame; ids 1..P inner (periodic id order), then
                     the corner's eight images, then each frame particle's
                     images (periodic id order). Non-periodic box = cell + 50 %
-                    of each side on both sides.
+                    of each side on both sides (the minimum of the
+                    templates' shrink-wrapped box, 'boundary m m m').
 ``NAME.vars``       LIGGGHTS include file (rve_Lx, rve_Ly, rve_Lz, rve_natoms, ...).
 ``NAME.stats.txt``  ``key value`` lines (also printed).
 

@@ -79,11 +79,12 @@ int main(int argc, char** argv)
     std::vector<Eigen::Matrix2d> F(2, Eigen::Matrix2d::Identity());
     F[0] << 1.001, 0.0, 0.0, 1.0;
     const std::vector<RveResponse<2>> before = pool.solve(F);
-    F[1] << 1e10, 0.0, 0.0, 1.0; // IP 101: frame particles far outside the box
+    F[1] << 1e10, 0.0, 0.0, 1.0; // IP 101: the box outgrows LIGGGHTS' neighbour bins
     check.throws_with("a LIGGGHTS error names the IP, on every rank", [&] { pool.solve(F); },
                       "RVE of IP 101 at (0.75, 0.5)");
     pool.rollback();
-    check.throws_with("... and quotes LIGGGHTS' message", [&] { pool.solve(F); }, "LIGGGHTS error: particle id");
+    check.throws_with("... and quotes LIGGGHTS' message", [&] { pool.solve(F); },
+                      "LIGGGHTS error: Domain too large for neighbor bins");
     pool.rollback();
     F[1] = Eigen::Matrix2d::Identity();
     const std::vector<RveResponse<2>> after = pool.solve(F);

@@ -6,15 +6,18 @@ prints the tables of the README and writes into RESULTS:
   problem3_bands.png   the in-plane shear strain increment of the last 2 %
                        of shear at each IP (element centres), the weak IP marked
   problem3.csv         per case and IP at the last row: position, band
-                       membership, porosity, coordination, sliding fraction
+                       membership, porosity, coordination, sliding fraction,
+                       mean particle rotation
 
 Stresses: the mean of the IPs' Cauchy stress (equal element volumes), tau =
 |sigma_12|, p = -tr(sigma)/3. The band: benchmarks/lbs2018/band_width.py on
 the increment of F's in-plane block over the last four rows (2 % of shear);
 inside = the IPs whose increment exceeds half the largest. Inside against
 outside: porosity 1 - solid fraction, coordination 2C/N, the fraction of
-sliding contacts, means over the IPs at the last row. (Particle rotations
-are not among the RVE statistics fe2dem records.)
+sliding contacts, the inner particles' mean rotation (history.h5's
+mean_rotation: mean |theta| accumulated since the RVE was built, in rad;
+"-" for runs made before fe2dem recorded it), means over the IPs at the
+last row.
 
 Usage: problem3.py RESULTS   (Debian's python3 with numpy, h5py, matplotlib)
 """
@@ -41,6 +44,7 @@ def read(case_dir):
     with h5py.File(os.path.join(case_dir, "out", "history.h5"), "r") as h:
         d = {k: h[k][()] for k in ("ip_position", "sigma", "packing_fraction", "coordination", "contacts",
                                    "sliding_contacts", "step")}
+        d["mean_rotation"] = h["mean_rotation"][()] if "mean_rotation" in h else None
     n_rows = len(d["step"])
     d["gamma_macro"] = SHEAR * np.arange(1, n_rows + 1) / n_rows  # load steps are equal in time
     return d
@@ -74,8 +78,8 @@ def main():
 
     print(f"\n## the band (increment over the last {BAND_ROWS} rows), and inside against outside at the end")
     print("| case | band width (mm) | angle (deg from x) | band middle y (mm) | weak IP in the band | porosity in / out "
-          "| coordination in / out | sliding fraction in / out |")
-    print("|---|---|---|---|---|---|---|---|")
+          "| coordination in / out | sliding fraction in / out | mean rotation (rad) in / out |")
+    print("|---|---|---|---|---|---|---|---|---|")
     fig, axes = plt.subplots(len(done), 1, figsize=(7, 2.2 * len(done)), squeeze=False)
     rows = []
     for ax, (k, d) in zip(axes[:, 0], done.items()):
@@ -85,14 +89,15 @@ def main():
         porosity = 1.0 - d["packing_fraction"][-1]
         coordination = d["coordination"][-1]
         sliding = d["sliding_contacts"][-1] / np.maximum(d["contacts"][-1], 1)
+        rotation = d["mean_rotation"][-1] if d["mean_rotation"] is not None else np.full(len(x), np.nan)
 
         def in_out(v):
-            return f"{v[inside].mean():.3f} / {v[~inside].mean():.3f}"
+            return "-" if np.isnan(v).all() else f"{v[inside].mean():.3f} / {v[~inside].mean():.3f}"
 
         print(f"| {k} | {1e3 * width:.1f} | {angle:.0f} | {1e3 * middle:.1f} | {'yes' if inside[weak] else 'no'} | "
-              f"{in_out(porosity)} | {in_out(coordination)} | {in_out(sliding)} |")
+              f"{in_out(porosity)} | {in_out(coordination)} | {in_out(sliding)} | {in_out(rotation)} |")
         rows += [[k, f"{x[i, 0]:.5f}", f"{x[i, 1]:.5f}", int(inside[i]), f"{porosity[i]:.4f}",
-                  f"{coordination[i]:.3f}", f"{sliding[i]:.3f}"] for i in range(len(x))]
+                  f"{coordination[i]:.3f}", f"{sliding[i]:.3f}", f"{rotation[i]:.4f}"] for i in range(len(x))]
         sc = ax.scatter(1e3 * x[:, 0], 1e3 * x[:, 1], c=gamma, s=160, marker="s", cmap="viridis")
         ax.plot(1e3 * x[weak, 0], 1e3 * x[weak, 1], "rx")
         ax.set_title(f"{k}: band width {1e3 * width:.1f} mm (x: the weak RVE)", fontsize=8)
@@ -104,7 +109,7 @@ def main():
     fig.savefig(os.path.join(results, "problem3_bands.png"), dpi=110)
     with open(os.path.join(results, "problem3.csv"), "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["case", "x", "y", "in_band", "porosity", "coordination", "sliding_fraction"])
+        w.writerow(["case", "x", "y", "in_band", "porosity", "coordination", "sliding_fraction", "mean_rotation"])
         w.writerows(rows)
 
     print("\n## cost (one rank each on the 2-core VM, walls shared with other runs)")

@@ -96,7 +96,7 @@ void RvePathRunner<dim>::open_output()
   csv_ << ",residual,ekin_epot,servo_iterations,dem_steps,coordination,anisotropy,"
           "packing_fraction,wall_s,mechanical_coordination,contacts,sliding_contacts,"
           "max_overlap,F_check_error,stress_iterations,membrane_steps,fabric_deviator,drive_time_s,"
-          "control_error\n";
+          "control_error,mean_rotation\n";
   csv_ << std::setprecision(12);
 }
 
@@ -113,7 +113,7 @@ void RvePathRunner<dim>::write_row(const Response& r, unsigned int stress_iterat
        << MPI_Wtime() - t_start_ << ',' << s.mechanical_coordination << ',' << s.contacts << ','
        << s.sliding_contacts << ',' << s.max_overlap << ',' << s.F_check_error << ',' << stress_iterations
        << ',' << membrane_steps_in_step_ << ',' << s.fabric_deviator << ',' << drive_time_ << ','
-       << control_error_ << '\n';
+       << control_error_ << ',' << s.mean_rotation << '\n';
   csv_.flush();
   if (prm_.particle_dumps_every > 0 && step_ % prm_.particle_dumps_every == 0)
   {

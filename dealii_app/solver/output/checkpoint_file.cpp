@@ -35,8 +35,9 @@ namespace
 //    2), /load_case_state, and the measures' reference
 //    loading_start_u_top/height (were u_top_ic, h_ic);
 // 8: the IP state with the committed F, the nonlocal F and the committed
-//    increment (nonlocal_material.h), in that order after F_last_step.
-constexpr int format_version = 8;
+//    increment (nonlocal_material.h), in that order after F_last_step;
+// 9: the IP state with the statistic mean_rotation.
+constexpr int format_version = 9;
 
 void check(herr_t status, const std::string& what, const std::string& file)
 {

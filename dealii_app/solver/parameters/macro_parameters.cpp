@@ -521,7 +521,8 @@ void Faults::declare_parameters(dealii::ParameterHandler& prm)
                     "Testing only: 'IP STEP [budget|liggghts]' makes the solve of the RVE of "
                     "quadrature point IP fail at the first attempt of load step STEP: 'budget' "
                     "(default) with a step budget of 1, 'liggghts' with an error LIGGGHTS raises "
-                    "itself (F11 of that solve times 1e10, so particles are lost). Empty: none.");
+                    "itself (F11 of that solve times 1e10: the box outgrows the neighbour bins). "
+                    "Empty: none.");
   prm.leave_subsection();
 }
 

@@ -101,10 +101,11 @@ def load(path):
 
 def interp(rows, key, x):
     xs = [r["strain"] for r in rows]
-    if x < xs[0] - 1e-12 or x > xs[-1] + 1e-12:
+    tol = 1e-9  # strains from F differ from a row's nominal strain by round-off (4e-12 seen)
+    if x < xs[0] - tol or x > xs[-1] + tol:
         return None
     for k in range(1, len(xs)):
-        if x <= xs[k] + 1e-12:
+        if x <= xs[k] + tol:
             t = (x - xs[k - 1]) / (xs[k] - xs[k - 1])
             return rows[k - 1][key] + t * (rows[k][key] - rows[k - 1][key])
     return rows[-1][key]

@@ -5,6 +5,8 @@ prints the tables of the README and writes into RESULTS:
   problem3_curves.png  tau/p of the volume average against the shear strain
   problem3_bands.png   the in-plane shear strain increment of the last 2 %
                        of shear at each IP (element centres), the weak IP marked
+  problem3_rotation.png  the inner particles' mean rotation at the end at
+                       each IP, for the runs that recorded it
   problem3.csv         per case and IP at the last row: position, band
                        membership, porosity, coordination, sliding fraction,
                        mean particle rotation
@@ -57,6 +59,24 @@ def curve(d):
     return np.concatenate([[0.0], d["gamma_macro"]]), np.concatenate([[0.0], np.abs(s[:, 1]) / p])
 
 
+def plot_rotation(cases, weak, path):
+    """The mean particle rotation at the end at each IP, one panel per case."""
+    if not cases:
+        return
+    fig, axes = plt.subplots(len(cases), 1, figsize=(7, 2.2 * len(cases)), squeeze=False)
+    for ax, (k, d) in zip(axes[:, 0], cases.items()):
+        x = d["ip_position"]
+        sc = ax.scatter(1e3 * x[:, 0], 1e3 * x[:, 1], c=d["mean_rotation"][-1], s=160, marker="s", cmap="magma")
+        ax.plot(1e3 * x[weak, 0], 1e3 * x[weak, 1], "cx")
+        ax.set_title(f"{k}: mean particle rotation at the end (rad; x: the weak RVE)", fontsize=8)
+        ax.set_aspect("equal")
+        ax.set_xlim(0, 118)
+        ax.set_ylim(0, 50.6)
+        fig.colorbar(sc, ax=ax, shrink=0.8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
@@ -107,6 +127,8 @@ def main():
         fig.colorbar(sc, ax=ax, shrink=0.8)
     fig.tight_layout()
     fig.savefig(os.path.join(results, "problem3_bands.png"), dpi=110)
+    plot_rotation({k: d for k, d in done.items() if d["mean_rotation"] is not None}, weak,
+                  os.path.join(results, "problem3_rotation.png"))
     with open(os.path.join(results, "problem3.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["case", "x", "y", "in_band", "porosity", "coordination", "sliding_fraction", "mean_rotation"])

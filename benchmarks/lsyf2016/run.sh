@@ -249,8 +249,8 @@ problem1_tables() {
 
 mkdir -p "$results"
 # Problem 4's cases: NAME CELLS_X CELLS_Y RADIUS (the same here and with --full)
-problem4_cases=("problem4_local_4x8 4 8 0" "problem4_local_6x12 6 12 0" "problem4_R11.8_6x12 6 12 0.0118"
-                "problem4_local_8x16 8 16 0" "problem4_R11.8_8x16 8 16 0.0118")
+problem4_cases=("problem4_local_4x8 4 8 0" "problem4_R11.8_4x8 4 8 0.0118" "problem4_local_6x12 6 12 0"
+                "problem4_R11.8_6x12 6 12 0.0118" "problem4_local_8x16 8 16 0" "problem4_R11.8_8x16 8 16 0.0118")
 # problem4_edit CELLS_X CELLS_Y RADIUS PACKING: problem4.prm's substitutions
 problem4_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; s#packings/PACKING#packings/$4#"; }
 # problem4_case NAME CELLS_X CELLS_Y RADIUS [sed expression]: a run that stops

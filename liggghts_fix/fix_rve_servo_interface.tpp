@@ -179,5 +179,6 @@ double FixRveServo<dim>::memory_usage()
 {
   const double nq = static_cast<double>(frame_.particles.size());
   return nq * (sizeof(fe2dem::FrameParticle<dim>) + 6 * sizeof(Vector) + 4 * sizeof(Rotation)) +
-         contacts_.capacity() * sizeof(fe2dem::Contact<dim>) + tag_to_dense_.capacity() * sizeof(int) + rotation_.capacity() * sizeof(Rotation);
+         contacts_.capacity() * sizeof(fe2dem::Contact<dim>) + tag_to_dense_.capacity() * sizeof(int) +
+         rotation_.capacity() * sizeof(Rotation);
 }

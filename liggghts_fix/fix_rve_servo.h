@@ -230,8 +230,9 @@ public:
    * accumulated since the fix was set up on the packing (the integral of
    * its spin, midpoint rule; an angle in 2D, a rotation vector's length in
    * 3D), in rad. Restart files carry it, so it survives commits, rollbacks
-   * and moves between ranks; a difference between two solves is the
-   * rotation over that part of the path.
+   * and moves between ranks. A mean of lengths: the difference between two
+   * solves is the rotation in between only where that rotation dominates
+   * the earlier one (as in a shear band; a rigid rotation adds exactly).
    */
   double mean_rotation() const;
   /**

@@ -59,20 +59,25 @@ def curve(d):
     return np.concatenate([[0.0], d["gamma_macro"]]), np.concatenate([[0.0], np.abs(s[:, 1]) / p])
 
 
+def ip_map(fig, ax, x, values, weak, title, cmap, weak_marker):
+    """One panel: @p values at the IPs @p x (element centres, m) over the specimen, the weak IP marked."""
+    sc = ax.scatter(1e3 * x[:, 0], 1e3 * x[:, 1], c=values, s=160, marker="s", cmap=cmap)
+    ax.plot(1e3 * x[weak, 0], 1e3 * x[weak, 1], weak_marker)
+    ax.set_title(title, fontsize=8)
+    ax.set_aspect("equal")
+    ax.set_xlim(0, 118)
+    ax.set_ylim(0, 50.6)
+    fig.colorbar(sc, ax=ax, shrink=0.8)
+
+
 def plot_rotation(cases, weak, path):
     """The mean particle rotation at the end at each IP, one panel per case."""
     if not cases:
         return
     fig, axes = plt.subplots(len(cases), 1, figsize=(7, 2.2 * len(cases)), squeeze=False)
     for ax, (k, d) in zip(axes[:, 0], cases.items()):
-        x = d["ip_position"]
-        sc = ax.scatter(1e3 * x[:, 0], 1e3 * x[:, 1], c=d["mean_rotation"][-1], s=160, marker="s", cmap="magma")
-        ax.plot(1e3 * x[weak, 0], 1e3 * x[weak, 1], "cx")
-        ax.set_title(f"{k}: mean particle rotation at the end (rad; x: the weak RVE)", fontsize=8)
-        ax.set_aspect("equal")
-        ax.set_xlim(0, 118)
-        ax.set_ylim(0, 50.6)
-        fig.colorbar(sc, ax=ax, shrink=0.8)
+        ip_map(fig, ax, d["ip_position"], d["mean_rotation"][-1], weak,
+               f"{k}: mean particle rotation at the end (rad; x: the weak RVE)", "magma", "cx")
     fig.tight_layout()
     fig.savefig(path, dpi=110)
 
@@ -118,13 +123,7 @@ def main():
               f"{in_out(porosity)} | {in_out(coordination)} | {in_out(sliding)} | {in_out(rotation)} |")
         rows += [[k, f"{x[i, 0]:.5f}", f"{x[i, 1]:.5f}", int(inside[i]), f"{porosity[i]:.4f}",
                   f"{coordination[i]:.3f}", f"{sliding[i]:.3f}", f"{rotation[i]:.4f}"] for i in range(len(x))]
-        sc = ax.scatter(1e3 * x[:, 0], 1e3 * x[:, 1], c=gamma, s=160, marker="s", cmap="viridis")
-        ax.plot(1e3 * x[weak, 0], 1e3 * x[weak, 1], "rx")
-        ax.set_title(f"{k}: band width {1e3 * width:.1f} mm (x: the weak RVE)", fontsize=8)
-        ax.set_aspect("equal")
-        ax.set_xlim(0, 118)
-        ax.set_ylim(0, 50.6)
-        fig.colorbar(sc, ax=ax, shrink=0.8)
+        ip_map(fig, ax, x, gamma, weak, f"{k}: band width {1e3 * width:.1f} mm (x: the weak RVE)", "viridis", "rx")
     fig.tight_layout()
     fig.savefig(os.path.join(results, "problem3_bands.png"), dpi=110)
     plot_rotation({k: d for k, d in done.items() if d["mean_rotation"] is not None}, weak,

@@ -10,14 +10,14 @@
 #   lsyf_1000   to 5 % in 20 steps
 #   ensemble_lsyf_1000  lsyf_1000 to 5 % as an ensemble: slow loading at
 #               0.25 /s x F against the reference at 0.0651 /s x F for the
-#               eight F = 0.96, 0.97, ..., 1.03 (F = 1 is the lsyf_1000
+#               sixteen F = 0.92, 0.93, ..., 1.07 (F = 1 is the lsyf_1000
 #               case's); after the peak single runs drop at different strains
 # Tables by curves.py --prepared (the ensemble's means with their standard
 # error) into results/slow_loading_PACKING.txt and
 # slow_loading_ensemble_lsyf_1000.txt.
 #   slow_loading.sh BUILD [small_3d|lsyf_1000|ensemble_lsyf_1000|all]   (default
 #   all, which is not the ensemble; about 5 min for small_3d, 40 min of CPU for
-#   lsyf_1000 and 50 more for the ensemble on the 2-core machine)
+#   lsyf_1000 and 2 hours more for the ensemble on the 2-core machine)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -75,7 +75,8 @@ fi
 if [[ "$what" == ensemble_lsyf_1000 ]]; then
   slow=("$out/lsyf_1000_0.25/out/summary.csv") ref=("$out/lsyf_1000_continuous_0.0651/rve.csv")
   [[ -f "${slow[0]}" && -f "${ref[0]}" ]] || "$0" "$build" lsyf_1000 > /dev/null
-  for f in 0.96 0.97 0.98 0.99 1.01 1.02 1.03; do
+  # eight a side (session 26) resolved about 3 % after the peak; sixteen (27)
+  for f in 0.96 0.97 0.98 0.99 1.01 1.02 1.03 0.92 0.93 0.94 0.95 1.04 1.05 1.06 1.07; do
     s=$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.25 * f}')
     r=$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.0651 * f}')
     slow "$out/lsyf_1000_$s" "$s" lsyf_1000 20 0.05 &
@@ -87,11 +88,15 @@ if [[ "$what" == ensemble_lsyf_1000 ]]; then
   curves() { /usr/bin/python3 "$here/curves.py" --prepared 1e5 compare "$@"; }
   join() { local IFS=,; echo "$*"; }
   {
-    echo "# lsyf_1000 to 5 %: the mean of eight slow-loading runs (0.25 /s x 0.96, 0.97, ..., 1.03) against the mean"
-    echo "# of eight continuous references (0.0651 /s x the same factors); then the null case, the mean of"
-    echo "# four references (F = 0.99 ... 1.03) against the mean of the other four, and each slow-loading run alone"
+    echo "# lsyf_1000 to 5 %: the mean of sixteen slow-loading runs (0.25 /s x 0.92, 0.93, ..., 1.07) against the mean"
+    echo "# of sixteen continuous references (0.0651 /s x the same factors); then the first eight of each"
+    echo "# (F = 0.96 ... 1.03, session 26's ensemble) and the second eight alone; then the null case, the mean"
+    echo "# of eight references (F = 0.99, 1.01 ... 1.03, 0.92 ... 0.95) against the mean of the other eight,"
+    echo "# and each slow-loading run alone"
     curves "$(join "${ref[@]}")" "$(join "${slow[@]}")"
-    curves "$(join "${ref[@]:4:4}")" "$(join "${ref[@]:0:4}")" | sed 1d
+    curves "$(join "${ref[@]:0:8}")" "$(join "${slow[@]:0:8}")" | sed 1d
+    curves "$(join "${ref[@]:8:8}")" "$(join "${slow[@]:8:8}")" | sed 1d
+    curves "$(join "${ref[@]:4:8}")" "$(join "${ref[@]:0:4}" "${ref[@]:12:4}")" | sed 1d
     for d in "${slow[@]}"; do curves "$(join "${ref[@]}")" "$d" | sed -n '2p;/^m[a-z_]* /p'; done
   } > "$here/results/slow_loading_ensemble_lsyf_1000.txt"
   cat "$here/results/slow_loading_ensemble_lsyf_1000.txt"

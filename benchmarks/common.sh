@@ -13,17 +13,23 @@ append_result() {
   machine="$(nproc)cores-$(awk -F: '/model name/ {gsub(/^ +/, "", $2); print $2; exit}' /proc/cpuinfo | tr ', ' '__')"
   echo "$(date -u +%FT%TZ),$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo none),$machine,$values" >> "$csv"
 }
+# prm_content < FILE: a parameter file without its comments and blank lines,
+# as deal.II's ParameterHandler reads it ('#' starts a comment)
+prm_content() { sed -e 's/#.*$//' -e 's/[[:space:]]*$//' -e '/^$/d'; }
 # needs_run CASE RESULT < <(commands writing a run's input): false when
-# RESULT exists and CASE holds that very text (the stored run is current),
-# else writes the text to CASE, removes a stale RESULT and returns true. Keeps
-# a rerun from reusing results made with an older parameter file. Run it in
-# the calling shell (input by process substitution, not a pipe) so that an
-# empty input, e.g. a missing template, stops the script.
+# RESULT exists and CASE holds the same parameters (comments aside: the
+# stored run is current and keeps the file it ran with), else writes the
+# text to CASE, removes a stale RESULT and returns true. Keeps a rerun from
+# reusing results made with an older parameter file. Run it in the calling
+# shell (input by process substitution, not a pipe) so that an empty input,
+# e.g. a missing template, stops the script.
 needs_run() {
   local case=$1 result=$2 text
   text="$(cat)"
   [[ -n "$text" ]] || { echo "needs_run: no input text for '$case' (is its template missing?)" >&2; exit 1; }
-  if [[ -f "$result" && -f "$case" && "$(cat "$case")" == "$text" ]]; then return 1; fi
+  if [[ -f "$result" && -f "$case" && "$(prm_content < "$case")" == "$(prm_content <<< "$text")" ]]; then
+    return 1
+  fi
   mkdir -p "$(dirname "$case")"
   printf '%s\n' "$text" > "$case"
   rm -f "$result"

@@ -45,7 +45,7 @@
 #              results/full/CASE/
 #   tables     the comparison tables from what exists
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
-# result exists is not run again.
+# result exists and whose parameter file is unchanged is not run again.
 #
 #   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem4|problem4_rates|tables|all [--full]
 set -euo pipefail
@@ -57,30 +57,33 @@ what=$2
 full=${3:-}
 results="$here/results"
 py=/usr/bin/python3
+source "$here/../common.sh"
 rebase() { sed "s#\.\./\.\./rve_templates#$root/rve_templates#" "$@"; }
 mpirun_np() {
   local n=$1; shift
   if [[ $n -eq 1 ]]; then "$@"; else mpirun --allow-run-as-root --oversubscribe -np "$n" "$@"; fi
 }
 
-# run_macro NAME PRM NP [sed expression]: fe2dem into results/NAME/out
+# clear_run DIR FILE: remove an earlier run's outputs from DIR but its input FILE
+clear_run() { find "$1" -mindepth 1 -maxdepth 1 ! -name "$2" -exec rm -rf {} +; }
+# run_macro NAME PRM NP [sed expression]: fe2dem into results/NAME/out; a
+# stored run is reused only if its macro.prm is the one generated now
+# (needs_run, ../common.sh), else it is run again
 run_macro() {
   local dir="$results/$1" prm=$2 np=$3 edit=${4:-}
-  [[ -f "$dir/out/history.h5" && -f "$dir/wall_s" ]] && return
-  rm -rf "$dir"; mkdir -p "$dir"
-  rebase "$prm" | sed "$edit" > "$dir/macro.prm"
+  needs_run "$dir/macro.prm" "$dir/wall_s" < <(rebase "$prm" | sed "$edit") || return 0
+  clear_run "$dir" macro.prm
   local t0=$SECONDS
   (cd "$dir" && mpirun_np "$np" "$build/dealii_app/solver/fe2dem" macro.prm > log 2>&1)
   echo $((SECONDS - t0)) > "$dir/wall_s"
   rm -rf "$dir/out/checkpoints" "$dir"/out/*.vtu "$dir"/out/*.pvd
   echo "$1: $(cat "$dir/wall_s") s on $np rank(s)"
 }
-# run_rve NAME PRM [sed expression]: fe2dem-rve into results/NAME
+# run_rve NAME PRM [sed expression]: fe2dem-rve into results/NAME (reused as run_macro's)
 run_rve() {
   local dir="$results/$1" prm=$2 edit=${3:-}
-  [[ -f "$dir/rve.csv" && -f "$dir/wall_s" ]] && return
-  rm -rf "$dir"; mkdir -p "$dir"
-  rebase "$prm" | sed "$edit" > "$dir/case.prm"
+  needs_run "$dir/case.prm" "$dir/wall_s" < <(rebase "$prm" | sed "$edit") || return 0
+  clear_run "$dir" case.prm
   local t0=$SECONDS
   "$build/dealii_app/rve_driver/fe2dem-rve" "$dir/case.prm" --output-directory "$dir" > "$dir/run.log"
   echo $((SECONDS - t0)) > "$dir/wall_s"

@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace fe2dem
 {
@@ -69,8 +71,33 @@ void Membrane<3>::build(const FrameTopology<3>& frame, const Vec3& L)
           m.q[j] = side == 0 ? vertex[t[j]] : image[t[j]];
         face.push_back(m);
       }
+      connect(2 * a + side, nq);
+      seen_[2 * a + side].assign(faces_[2 * a + side].size(), 0);
     }
   }
+}
+
+// The neighbours across each edge and the triangles at each vertex of one face.
+void Membrane<3>::connect(int f, std::size_t n_frame)
+{
+  auto& face = faces_[f];
+  auto& at = at_vertex_[f];
+  at.assign(n_frame, {});
+  std::map<std::pair<int, int>, int> first_at_edge; // (smaller, larger) frame index -> triangle
+  for (int t = 0; t < static_cast<int>(face.size()); ++t)
+    for (int j = 0; j < 3; ++j)
+    {
+      at[face[t].q[j]].push_back(t);
+      const int qa = face[t].q[(j + 1) % 3], qb = face[t].q[(j + 2) % 3];
+      const auto [it, inserted] = first_at_edge.emplace(std::minmax(qa, qb), t);
+      if (inserted)
+        continue;
+      const int u = it->second; // the other triangle on this edge
+      face[t].across[j] = u;
+      for (int k = 0; k < 3; ++k)
+        if (face[u].q[k] != qa && face[u].q[k] != qb)
+          face[u].across[k] = t;
+    }
 }
 
 // Candidate (particle, triangle) pairs. Until LIGGGHTS next rebuilds its
@@ -80,7 +107,9 @@ void Membrane<3>::build(const FrameTopology<3>& frame, const Vec3& L)
 // A pair can only meet (centre across the plane, projection inside) if the
 // particle is within that margin of the triangle's current box there: the
 // list is exact for as long as LIGGGHTS' own pair lists are. Rebuilt with
-// them and when F changes.
+// them and when F changes. (A pair that meets at an edge or vertex has the
+// centre across a plane of the group as well; apply() then looks at the
+// triangles around the group's too.)
 void Membrane<3>::collect_candidates(const MembraneStep<3>& s)
 {
   double** x = s.x;
@@ -141,6 +170,121 @@ void Membrane<3>::collect_candidates(const MembraneStep<3>& s)
   stale_ = false;
 }
 
+Vec3 Membrane<3>::inward_normal(int face, int t, double** x, const std::vector<int>& frame_local) const
+{
+  const Triangle& tr = faces_[face][t];
+  const Vec3 v0 = first3(x[frame_local[tr.q[0]]]);
+  const Vec3 normal = cross(first3(x[frame_local[tr.q[1]]]) - v0, first3(x[frame_local[tr.q[2]]]) - v0);
+  const double area2_sq = dot(normal, normal);
+  if (!(area2_sq > 0.0))
+    return {};
+  // inward: counter-clockwise in (x_b, x_c) on x_a = 0, the images on x_a = L_a face outward
+  return ((face % 2 == 0 ? 1.0 : -1.0) / std::sqrt(area2_sq)) * normal;
+}
+
+bool Membrane<3>::may_meet(int face, int t, const Vec3& xi, double r, double** x,
+                           const std::vector<int>& frame_local) const
+{
+  const Triangle& tr = faces_[face][t];
+  Vec3 v[3];
+  for (int j = 0; j < 3; ++j)
+    v[j] = first3(x[frame_local[tr.q[j]]]);
+  const Vec3 normal = cross(v[1] - v[0], v[2] - v[0]); // |normal| = 2 area
+  const double area2_sq = dot(normal, normal);
+  if (!(area2_sq > 0.0))
+    return false; // a collapsed triangle (its neighbours cover the face)
+  const Vec3 n = ((face % 2 == 0 ? 1.0 : -1.0) / std::sqrt(area2_sq)) * normal;
+  const double h = dot(xi - v[0], n);
+  if (h >= 0.0 || h < -r)
+    return false; // not crossed, or more than r out
+  // the projection within r of each edge's line: w_j 2A / |e_j| > -r, as
+  // w_j 2A = ((v_j+1 - p) x (v_j+2 - p)) . normal / 2A
+  const Vec3 p = xi - h * n;
+  for (int j = 0; j < 3; ++j)
+  {
+    const Vec3 a = v[(j + 1) % 3] - p, b = v[(j + 2) % 3] - p;
+    const double w2a = dot(cross(a, b), normal); // w_j (2A)^2
+    if (w2a <= 0.0 && w2a * w2a >= r * r * area2_sq * dot(b - a, b - a))
+      return false;
+  }
+  return true;
+}
+
+Membrane<3>::Nearest Membrane<3>::nearest_point(int face, int t, const Vec3& xi, double** x,
+                                               const std::vector<int>& frame_local) const
+{
+  const Triangle& tr = faces_[face][t];
+  Vec3 v[3];
+  for (int j = 0; j < 3; ++j)
+    v[j] = first3(x[frame_local[tr.q[j]]]);
+  const Vec3 normal = cross(v[1] - v[0], v[2] - v[0]); // |normal| = 2 area
+  const double area2_sq = dot(normal, normal);
+  Nearest near;
+  if (!(area2_sq > 0.0))
+    return near; // a collapsed triangle: triangle -1
+  near.triangle = t;
+  const double inward = face % 2 == 0 ? 1.0 : -1.0;
+  const Vec3 n = (inward / std::sqrt(area2_sq)) * normal;
+  const double h = dot(xi - v[0], n); // > 0: the centre is on the inner side
+  const Vec3 p = xi - h * n;           // projection onto the plane
+  for (int j = 0; j < 3; ++j)
+    near.w[j] = dot(cross(v[(j + 1) % 3] - p, v[(j + 2) % 3] - p), normal) / area2_sq;
+  if (near.w[0] > 0.0 && near.w[1] > 0.0 && near.w[2] > 0.0)
+  {
+    near.distance = std::abs(h);
+    near.outward = h;
+    near.push = n;
+    return near;
+  }
+  // outside the triangle: the nearest point of its three edges
+  near.distance = 1e300;
+  for (int j = 0; j < 3; ++j)
+  {
+    const Vec3 a = v[(j + 1) % 3], e = v[(j + 2) % 3] - a;
+    const double u = std::clamp(dot(xi - a, e) / dot(e, e), 0.0, 1.0);
+    const Vec3 q = a + u * e;
+    const double d = norm(xi - q);
+    if (d >= near.distance)
+      continue;
+    near.distance = d;
+    near.point = q;
+    near.w = {};
+    near.w[(j + 1) % 3] = 1.0 - u;
+    near.w[(j + 2) % 3] = u;
+    near.feature = u > 0.0 && u < 1.0 ? Feature::edge : Feature::vertex;
+    near.j = u > 0.0 && u < 1.0 ? j : (u == 0.0 ? (j + 1) % 3 : (j + 2) % 3);
+  }
+  near.normal = n;
+  near.push = near.distance > 0.0 ? (1.0 / near.distance) * (near.point - xi) : n;
+  return near;
+}
+
+double Membrane<3>::outward_at_ridge(int face, const Nearest& near, const Vec3& xi, double** x,
+                                     const std::vector<int>& frame_local) const
+{
+  const Triangle& tr = faces_[face][near.triangle];
+  Vec3 pseudo = near.normal; // edge or vertex: the sum of the adjacent triangles' normals
+  if (near.feature == Feature::edge && tr.across[near.j] >= 0)
+    pseudo = pseudo + inward_normal(face, tr.across[near.j], x, frame_local);
+  else if (near.feature == Feature::vertex)
+  {
+    pseudo = {};
+    for (const int u : at_vertex_[face][tr.q[near.j]])
+    {
+      const Triangle& other = faces_[face][u];
+      int k = 0;
+      while (other.q[k] != tr.q[near.j])
+        ++k;
+      const Vec3 c = first3(x[frame_local[other.q[k]]]);
+      const Vec3 e1 = first3(x[frame_local[other.q[(k + 1) % 3]]]) - c;
+      const Vec3 e2 = first3(x[frame_local[other.q[(k + 2) % 3]]]) - c;
+      const double angle = std::acos(std::clamp(dot(e1, e2) / (norm(e1) * norm(e2)), -1.0, 1.0));
+      pseudo = pseudo + angle * inward_normal(face, u, x, frame_local);
+    }
+  }
+  return dot(xi - near.point, pseudo);
+}
+
 long Membrane<3>::apply(const MembraneStep<3>& s)
 {
   double** x = s.x;
@@ -148,41 +292,62 @@ long Membrane<3>::apply(const MembraneStep<3>& s)
   if (stale_ || s.neighbor_build != built_at_)
     collect_candidates(s);
   long contacts = 0;
-  for (const MembraneCandidate& cand : candidates_)
+  // candidates come grouped by particle, then face: one contact per group
+  for (std::size_t g = 0, end = 0; g < candidates_.size(); g = end)
   {
-    const Triangle& t = faces_[cand.side][cand.segment];
-    int local[3];
-    Vec3 v[3];
-    for (int j = 0; j < 3; ++j)
-    {
-      local[j] = s.frame_local[t.q[j]];
-      v[j] = first3(x[local[j]]);
-    }
-    const Vec3 normal = cross(v[1] - v[0], v[2] - v[0]); // |normal| = 2 area
-    const double area2_sq = dot(normal, normal);
-    if (!(area2_sq > 0.0))
-      continue; // a collapsed triangle (its neighbours cover the face)
-    // inward: counter-clockwise in (x_b, x_c) on x_a = 0, the images on x_a = L_a face outward
-    const double inward = cand.side % 2 == 0 ? 1.0 : -1.0;
-    const Vec3 n = (inward / std::sqrt(area2_sq)) * normal;
-    const int i = cand.i;
+    const int i = candidates_[g].i, face = candidates_[g].side;
+    for (end = g; end < candidates_.size() && candidates_[end].i == i && candidates_[end].side == face;)
+      ++end;
     const Vec3 xi = first3(x[i]);
-    const double h = dot(xi - v[0], n); // > 0: the centre is on the inner side
     const double r = s.radius[i];
-    if (h >= 0.0 || h < -r)
+    // A contact needs the nearest point q within r and the centre on the
+    // outer side of a plane through q (else it is on the inner side of q's
+    // pseudo-normal too): a triangle crossed by at most r whose projection
+    // lies within r of it. Most groups (centres inside) stop here, as
+    // cheaply as a plane test.
+    bool crossed = false;
+    for (std::size_t c = g; c < end && !crossed; ++c)
+      crossed = may_meet(face, candidates_[c].segment, xi, r, x, s.frame_local);
+    if (!crossed)
       continue; // not crossed, or already out (check_particles reports that)
-    const Vec3 p = xi - h * n; // projection onto the plane
-    double w[3];
-    for (int j = 0; j < 3; ++j)
-      w[j] = dot(cross(v[(j + 1) % 3] - p, v[(j + 2) % 3] - p), normal) / area2_sq;
-    if (w[0] <= 0.0 || w[1] <= 0.0 || w[2] <= 0.0)
-      continue; // the neighbouring triangle's business
-    const double fn = s.law.membrane_force(-h, r);
+    // the group's triangles and those sharing a vertex with them: the
+    // nearest point is within r, and triangles are larger than r
+    near_set_.clear();
+    if (++visit_ == 0) // wrapped: forget every earlier visit
+    {
+      for (auto& seen : seen_)
+        std::fill(seen.begin(), seen.end(), 0u);
+      visit_ = 1;
+    }
+    auto add = [&](int t) {
+      if (seen_[face][t] != visit_)
+        seen_[face][t] = visit_, near_set_.push_back(t);
+    };
+    for (std::size_t c = g; c < end; ++c)
+      for (const int q : faces_[face][candidates_[c].segment].q)
+        for (const int t : at_vertex_[face][q])
+          add(t);
+    std::sort(near_set_.begin(), near_set_.end()); // ties go to the lowest index
+    Nearest best;
+    for (const int t : near_set_)
+    {
+      const Nearest near = nearest_point(face, t, xi, x, s.frame_local);
+      if (near.triangle >= 0 && (best.triangle < 0 || near.distance < best.distance))
+        best = near;
+    }
+    if (best.triangle < 0 || best.distance > r)
+      continue;
+    if (best.feature != Feature::inside)
+      best.outward = outward_at_ridge(face, best, xi, x, s.frame_local);
+    if (best.outward >= 0.0)
+      continue; // the nearest point of the face has the centre on its inner side
+    const double fn = s.law.membrane_force(best.distance, r);
+    const Triangle& t = faces_[face][best.triangle];
     for (int k = 0; k < 3; ++k)
     {
-      f[i][k] += fn * n[k];
+      f[i][k] += fn * best.push[k];
       for (int j = 0; j < 3; ++j)
-        f[local[j]][k] -= w[j] * fn * n[k];
+        f[s.frame_local[t.q[j]]][k] -= best.w[j] * fn * best.push[k];
     }
     ++contacts;
   }

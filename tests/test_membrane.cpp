@@ -4,6 +4,8 @@
 // particle is the contact law's normal force at the crossing, along the
 // inward normal; the reactions on the frame particles balance it in force and
 // moment (so P holds them); a particle clear of the surface feels nothing;
+// in 3D a centre beyond a ridge of the face meets its edge, and one across a
+// valley meets one triangle, not two;
 // F rotates the picture with it; the keyword's values make the right one.
 #include "check.h"
 #include "membrane_2d.h"
@@ -132,6 +134,59 @@ void two_d(Checker& c)
   check_balance(c, "2D rotated", rot, kn);
 }
 
+/// Moves the frame particles at reference (0, y, z) of @p atoms to x = @p x.
+void move_corners(Atoms<3>& atoms, const fe2dem::FrameTopology<3>& frame, double L,
+                  const std::vector<std::array<double, 2>>& yz, double x)
+{
+  for (std::size_t q = 0; q < frame.particles.size(); ++q)
+    for (const auto& p : yz)
+      if (frame.particles[q].X[0] == 0.0 && frame.particles[q].X[1] == p[0] * L &&
+          frame.particles[q].X[2] == p[1] * L)
+        atoms.x[atoms.frame_local[q]][0] = x;
+}
+
+// The face x = 0 of the corner frame is two triangles on the diagonal from
+// (0, L, 0) to (0, 0, L). Folded along it, the face has a ridge: a centre
+// beyond the ridge projects outside both triangles (how small_3d lost a
+// particle in simple shear, session 28) and must meet the edge; folded the
+// other way (a valley) a crossed centre meets one triangle, not both.
+void ridges(Checker& c, const fe2dem::FrameTopology<3>& frame, fe2dem::Membrane<3>& membrane,
+            const fe2dem::ContactLaw& law)
+{
+  const double L = 4.0, r = 1.0, kn = law.kn, d = 0.5, delta = 0.1;
+  const fe2dem::Mat3 I{1, 0, 0, 0, 1, 0, 0, 0, 1};
+  const std::vector<std::array<double, 2>> diagonal{{1.0, 0.0}, {0.0, 1.0}}, off{{0.0, 0.0}, {1.0, 1.0}};
+  // ridge outwards: the diagonal's two corners at x = -d, the centre delta beyond its middle
+  Atoms<3> ridge(frame, I, {-d - delta, 0.5 * L, 0.5 * L}, r);
+  move_corners(ridge, frame, L, diagonal, -d);
+  membrane.mark_stale();
+  c.truth("3D ridge: a centre beyond the edge meets it (one contact)", membrane.apply(ridge.step(frame, I, law)) == 1);
+  c.near("3D ridge: pushed back towards the edge, kn delta", ridge.f.back()[0], kn * delta, 1e-9 * kn);
+  c.near("3D ridge: no push along the edge", std::hypot(ridge.f.back()[1], ridge.f.back()[2]), 0.0, 1e-9 * kn);
+  check_balance(c, "3D ridge", ridge, kn * L);
+  // the same centre delta inside the ridge: nothing
+  Atoms<3> under(frame, I, {-d + delta, 0.5 * L, 0.5 * L}, r);
+  move_corners(under, frame, L, diagonal, -d);
+  membrane.mark_stale();
+  c.truth("3D ridge: a centre inside the ridge feels nothing", membrane.apply(under.step(frame, I, law)) == 0);
+  // valley: the other two corners at x = -d; a centre delta across the edge at the
+  // middle crosses both planes and meets the nearer one only
+  Atoms<3> valley(frame, I, {-delta, 0.5 * L, 0.5 * L}, r);
+  move_corners(valley, frame, L, off, -d);
+  membrane.mark_stale();
+  c.truth("3D valley: one contact, not one per triangle", membrane.apply(valley.step(frame, I, law)) == 1);
+  // the planes through the edge x = 0 at y + z = L and a corner at (-d, 0, 0): distance delta cos(tilt)
+  const double tilt = std::atan(d / (L / std::sqrt(2.0)));
+  c.near("3D valley: pushed with the nearer plane's crossing", std::hypot(valley.f.back()[0],
+         std::hypot(valley.f.back()[1], valley.f.back()[2])), kn * delta * std::cos(tilt), 1e-9 * kn);
+  check_balance(c, "3D valley", valley, kn * L);
+  // a centre inside the valley, near its edge: nothing
+  Atoms<3> inside(frame, I, {delta, 0.5 * L, 0.5 * L}, r);
+  move_corners(inside, frame, L, off, -d);
+  membrane.mark_stale();
+  c.truth("3D valley: a centre inside it feels nothing", membrane.apply(inside.step(frame, I, law)) == 0);
+}
+
 void three_d(Checker& c)
 {
   const double L = 4.0, r = 1.0, kn = 1e5;
@@ -156,6 +211,7 @@ void three_d(Checker& c)
   Atoms<3> clear(frame, I, {0.3, 1.3, 0.7}, r);
   membrane.mark_stale();
   c.truth("3D: a centre on the inner side feels nothing", membrane.apply(clear.step(frame, I, law)) == 0);
+  ridges(c, frame, membrane, law);
 }
 } // namespace
 

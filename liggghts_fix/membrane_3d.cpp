@@ -170,30 +170,25 @@ void Membrane<3>::collect_candidates(const MembraneStep<3>& s)
   stale_ = false;
 }
 
-Vec3 Membrane<3>::inward_normal(int face, int t, double** x, const std::vector<int>& frame_local) const
+Membrane<3>::Corners Membrane<3>::corners(int face, int t, double** x, const std::vector<int>& frame_local) const
 {
-  const Triangle& tr = faces_[face][t];
-  const Vec3 v0 = first3(x[frame_local[tr.q[0]]]);
-  const Vec3 normal = cross(first3(x[frame_local[tr.q[1]]]) - v0, first3(x[frame_local[tr.q[2]]]) - v0);
-  const double area2_sq = dot(normal, normal);
-  if (!(area2_sq > 0.0))
-    return {};
+  Corners c;
+  for (int j = 0; j < 3; ++j)
+    c.v[j] = first3(x[frame_local[faces_[face][t].q[j]]]);
+  c.normal = cross(c.v[1] - c.v[0], c.v[2] - c.v[0]);
+  c.area2_sq = dot(c.normal, c.normal);
   // inward: counter-clockwise in (x_b, x_c) on x_a = 0, the images on x_a = L_a face outward
-  return ((face % 2 == 0 ? 1.0 : -1.0) / std::sqrt(area2_sq)) * normal;
+  if (c.area2_sq > 0.0)
+    c.n = ((face % 2 == 0 ? 1.0 : -1.0) / std::sqrt(c.area2_sq)) * c.normal;
+  return c;
 }
 
 bool Membrane<3>::may_meet(int face, int t, const Vec3& xi, double r, double** x,
                            const std::vector<int>& frame_local) const
 {
-  const Triangle& tr = faces_[face][t];
-  Vec3 v[3];
-  for (int j = 0; j < 3; ++j)
-    v[j] = first3(x[frame_local[tr.q[j]]]);
-  const Vec3 normal = cross(v[1] - v[0], v[2] - v[0]); // |normal| = 2 area
-  const double area2_sq = dot(normal, normal);
+  const auto [v, normal, area2_sq, n] = corners(face, t, x, frame_local);
   if (!(area2_sq > 0.0))
     return false; // a collapsed triangle (its neighbours cover the face)
-  const Vec3 n = ((face % 2 == 0 ? 1.0 : -1.0) / std::sqrt(area2_sq)) * normal;
   const double h = dot(xi - v[0], n);
   if (h >= 0.0 || h < -r)
     return false; // not crossed, or more than r out
@@ -213,18 +208,11 @@ bool Membrane<3>::may_meet(int face, int t, const Vec3& xi, double r, double** x
 Membrane<3>::Nearest Membrane<3>::nearest_point(int face, int t, const Vec3& xi, double** x,
                                                const std::vector<int>& frame_local) const
 {
-  const Triangle& tr = faces_[face][t];
-  Vec3 v[3];
-  for (int j = 0; j < 3; ++j)
-    v[j] = first3(x[frame_local[tr.q[j]]]);
-  const Vec3 normal = cross(v[1] - v[0], v[2] - v[0]); // |normal| = 2 area
-  const double area2_sq = dot(normal, normal);
+  const auto [v, normal, area2_sq, n] = corners(face, t, x, frame_local);
   Nearest near;
   if (!(area2_sq > 0.0))
     return near; // a collapsed triangle: triangle -1
   near.triangle = t;
-  const double inward = face % 2 == 0 ? 1.0 : -1.0;
-  const Vec3 n = (inward / std::sqrt(area2_sq)) * normal;
   const double h = dot(xi - v[0], n); // > 0: the centre is on the inner side
   const Vec3 p = xi - h * n;           // projection onto the plane
   for (int j = 0; j < 3; ++j)
@@ -265,7 +253,7 @@ double Membrane<3>::outward_at_ridge(int face, const Nearest& near, const Vec3& 
   const Triangle& tr = faces_[face][near.triangle];
   Vec3 pseudo = near.normal; // edge or vertex: the sum of the adjacent triangles' normals
   if (near.feature == Feature::edge && tr.across[near.j] >= 0)
-    pseudo = pseudo + inward_normal(face, tr.across[near.j], x, frame_local);
+    pseudo = pseudo + corners(face, tr.across[near.j], x, frame_local).n;
   else if (near.feature == Feature::vertex)
   {
     pseudo = {};
@@ -279,7 +267,7 @@ double Membrane<3>::outward_at_ridge(int face, const Nearest& near, const Vec3& 
       const Vec3 e1 = first3(x[frame_local[other.q[(k + 1) % 3]]]) - c;
       const Vec3 e2 = first3(x[frame_local[other.q[(k + 2) % 3]]]) - c;
       const double angle = std::acos(std::clamp(dot(e1, e2) / (norm(e1) * norm(e2)), -1.0, 1.0));
-      pseudo = pseudo + angle * inward_normal(face, u, x, frame_local);
+      pseudo = pseudo + angle * corners(face, u, x, frame_local).n;
     }
   }
   return dot(xi - near.point, pseudo);

@@ -91,8 +91,15 @@ private:
   /// For @p near on an edge or a vertex: the centre's side of its pseudo-normal (< 0: crossed).
   double outward_at_ridge(int face, const Nearest& near, const Vec3& xi, double** x,
                           const std::vector<int>& frame_local) const;
-  /// The inward unit normal of triangle @p t of face @p face; zero if it has collapsed.
-  Vec3 inward_normal(int face, int t, double** x, const std::vector<int>& frame_local) const;
+  /// A triangle as it is now: corners, normal (|normal| = 2 area), inward unit normal (zero if collapsed).
+  struct Corners
+  {
+    std::array<Vec3, 3> v{};
+    Vec3 normal{};
+    double area2_sq = 0.0;
+    Vec3 n{};
+  };
+  Corners corners(int face, int t, double** x, const std::vector<int>& frame_local) const;
   struct Box ///< a triangle's current extent in reference-cell coordinates
   {
     std::array<double, 2> lo{}, hi{}; ///< in-plane (x_b, x_c)

@@ -299,7 +299,9 @@ long Membrane<3>::apply(const MembraneStep<3>& s)
     if (!crossed)
       continue; // not crossed, or already out (check_particles reports that)
     // the group's triangles and those sharing a vertex with them: the
-    // nearest point is within r, and triangles are larger than r
+    // nearest point lies within 2r of a crossed triangle, which that ring
+    // covers where triangles span a diameter or more (frame faces' do; a
+    // point missed there only means a farther one decides)
     near_set_.clear();
     if (++visit_ == 0) // wrapped: forget every earlier visit
     {

@@ -75,7 +75,7 @@ fi
 if [[ "$what" == ensemble_lsyf_1000 ]]; then
   slow=("$out/lsyf_1000_0.25/out/summary.csv") ref=("$out/lsyf_1000_continuous_0.0651/rve.csv")
   [[ -f "${slow[0]}" && -f "${ref[0]}" ]] || "$0" "$build" lsyf_1000 > /dev/null
-  # eight a side (session 26) resolved about 3 % after the peak; sixteen (27)
+  # eight a side (session 26) resolved about 3 % after the peak; sixteen (session 28) 1 %
   for f in 0.96 0.97 0.98 0.99 1.01 1.02 1.03 0.92 0.93 0.94 0.95 1.04 1.05 1.06 1.07; do
     s=$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.25 * f}')
     r=$(awk -v f="$f" 'BEGIN {printf "%.6g", 0.0651 * f}')

@@ -72,7 +72,6 @@ void Membrane<3>::build(const FrameTopology<3>& frame, const Vec3& L)
         face.push_back(m);
       }
       connect(2 * a + side, nq);
-      seen_[2 * a + side].assign(faces_[2 * a + side].size(), 0);
     }
   }
 }
@@ -303,21 +302,11 @@ long Membrane<3>::apply(const MembraneStep<3>& s)
     // covers where triangles span a diameter or more (frame faces' do; a
     // point missed there only means a farther one decides)
     near_set_.clear();
-    if (++visit_ == 0) // wrapped: forget every earlier visit
-    {
-      for (auto& seen : seen_)
-        std::fill(seen.begin(), seen.end(), 0u);
-      visit_ = 1;
-    }
-    auto add = [&](int t) {
-      if (seen_[face][t] != visit_)
-        seen_[face][t] = visit_, near_set_.push_back(t);
-    };
     for (std::size_t c = g; c < end; ++c)
       for (const int q : faces_[face][candidates_[c].segment].q)
-        for (const int t : at_vertex_[face][q])
-          add(t);
+        near_set_.insert(near_set_.end(), at_vertex_[face][q].begin(), at_vertex_[face][q].end());
     std::sort(near_set_.begin(), near_set_.end()); // ties go to the lowest index
+    near_set_.erase(std::unique(near_set_.begin(), near_set_.end()), near_set_.end());
     Nearest best;
     for (const int t : near_set_)
     {

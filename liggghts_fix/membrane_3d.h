@@ -116,9 +116,7 @@ private:
   std::array<std::vector<Box>, 6> boxes_; ///< parallel to faces_
   std::array<double, 6> face_reach_{};    ///< deepest reach of each face
   std::vector<MembraneCandidate> candidates_;
-  std::vector<int> near_set_;                   ///< apply(): the triangles around a crossed group
-  std::array<std::vector<unsigned>, 6> seen_{}; ///< per triangle, the visit that added it
-  unsigned visit_ = 0;
+  std::vector<int> near_set_; ///< apply(): the triangles around a crossed group (kept to reuse its memory)
   std::int64_t built_at_ = -1; ///< neighbour build of the candidates
   bool stale_ = true;
 };

@@ -142,7 +142,7 @@ void ExplicitSolver<dim>::make_material(const std::string& checkpoint)
   nonlocal_ = averaging != nullptr;
   if (averaging) // outside the corotational update: the increments are averaged, then rotated (physics.md 1.4)
     material_ = std::make_unique<NonlocalMaterial<dim>>(std::move(material_), std::move(*averaging),
-                                                        prm_.nonlocal.alpha);
+                                                        prm_.nonlocal.alpha, local_elasticity());
 }
 
 // The neighbour sets of 'Interaction radius' over the IPs' reference
@@ -186,6 +186,19 @@ std::unique_ptr<NonlocalOperator<dim>> ExplicitSolver<dim>::make_nonlocal_operat
          << " quadrature points in the largest neighbour set, "
          << static_cast<double>(total) / static_cast<double>(ip_.size()) << " on average" << std::endl;
   return averaging;
+}
+
+// C_e of 'Formulation' = local elastic (Lame constants; 2D: plane strain); none for total strain.
+template <int dim>
+LocalElasticity ExplicitSolver<dim>::local_elasticity() const
+{
+  const Nonlocal& n = prm_.nonlocal;
+  if (n.formulation != Nonlocal::Formulation::local_elastic)
+    return {};
+  const double nu = n.poisson_ratio;
+  pcout_ << "nonlocal operator: local elastic formulation, C_e with E = " << n.elastic_modulus << ", nu = " << nu
+         << std::endl;
+  return {n.elastic_modulus * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)), n.elastic_modulus / (2.0 * (1.0 + nu))};
 }
 
 template <int dim>

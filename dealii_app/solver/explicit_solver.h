@@ -48,6 +48,7 @@
 
 namespace fe2dem::macro
 {
+struct LocalElasticity;
 template <int dim>
 class ExplicitSolver : private MacroSystem<dim>
 {
@@ -91,6 +92,7 @@ private:
   /// The operator of subsection Nonlocal on the IPs; nullptr for the local continuum
   /// (a warning if the radius reaches no other IP).
   std::unique_ptr<NonlocalOperator<dim>> make_nonlocal_operator() const;
+  LocalElasticity local_elasticity() const;
   /// The neo-Hookean law or the RVEs, before the corotational and nonlocal wrappers.
   void make_constitutive_material(const std::string& checkpoint);
   void update_stresses();

@@ -11,11 +11,14 @@ using namespace dealii;
 
 template <int dim>
 NonlocalMaterial<dim>::NonlocalMaterial(std::unique_ptr<Material<dim>> inner, NonlocalOperator<dim> averaging,
-                                        const double alpha)
-  : MaterialWrapper<dim>(std::move(inner)), averaging_(std::move(averaging)), alpha_(alpha)
+                                        const double alpha, const LocalElasticity elastic)
+  : MaterialWrapper<dim>(std::move(inner)), averaging_(std::move(averaging)), alpha_(alpha), elastic_(elastic)
 {
   if (!(alpha >= 0.0 && alpha <= 1.0))
     throw std::invalid_argument("NonlocalMaterial: alpha = " + std::to_string(alpha) + " is not in [0, 1]");
+  if (!(elastic.lambda >= 0.0 && elastic.mu >= 0.0))
+    throw std::invalid_argument("NonlocalMaterial: the local elastic law needs lambda >= 0 and mu >= 0, not " +
+                                std::to_string(elastic.lambda) + " and " + std::to_string(elastic.mu));
 }
 
 template <int dim>
@@ -51,6 +54,14 @@ EvaluationCost NonlocalMaterial<dim>::evaluate(std::vector<IpState<dim>>& points
     const IpState<dim>& s = seen_[k];
     const Tensor<2, dim> sigma = s.P * transpose(s.F) / determinant(s.F);
     p.P = determinant(p.F) * sigma * transpose(invert(p.F));
+    if (elastic_.active())
+    {
+      const Tensor<2, dim> dE = 0.5 * (transpose(p.F) * p.F - transpose(s.F) * s.F);
+      Tensor<2, dim> S = 2.0 * elastic_.mu * dE; // second Piola-Kirchhoff stress of C_e
+      for (unsigned int d = 0; d < dim; ++d)
+        S[d][d] += elastic_.lambda * trace(dE);
+      p.P += p.F * S;
+    }
     p.F_nonlocal_trial = s.F;
     p.F_corotational_trial = s.F_corotational_trial;
     p.statistics = s.statistics;

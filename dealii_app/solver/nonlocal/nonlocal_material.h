@@ -17,6 +17,21 @@
  * as in physics.md 1.4). Its Cauchy stress sigma = Pbar Fbar^T / det Fbar
  * is placed at the point's own configuration: P = det F sigma F^-T.
  *
+ * With a local elastic law C_e (Formulation = local elastic, Bazant & Lin
+ * 1988's nonlocal smeared cracking) the point also gets the elastic stress
+ * of the difference between its own strain and the averaged one:
+ *   P = det F sigma F^-T + F (C_e : (E - Ebar)),  E = (F^T F - I) / 2,
+ *   Ebar = (Fbar^T Fbar - I) / 2,  C_e : E = lambda tr(E) I + 2 mu E.
+ * Why: the average alone is blind to every pattern it averages out (a
+ * strain oscillating at the IP spacing), so the points' own strains are
+ * free in those patterns, and a soft point takes the inverse of the average
+ * of its softness (test_nonlocal_material.cpp: a pattern's stiffness is
+ * lambda_k D, with lambda_k the average's eigenvalue for it, down to 0.03 at
+ * R = 4 spacings in 1D). With C_e it is lambda_k D + (1 - lambda_k) C_e: the
+ * elastic strain is local, the material's departure from C_e is averaged.
+ * The difference of Green-Lagrange strains is objective (a rotation applied
+ * to F and Fbar alike leaves it unchanged).
+ *
  * Because the weights of a point sum to 1, a homogeneous deformation gives
  * every point its own F (to rounding): the patch test holds. Fbar_n and the
  * committed increments are IpState::F_nonlocal and F_increment_committed,
@@ -33,6 +48,14 @@
 
 namespace fe2dem::macro
 {
+/// The local elastic law C_e of the local elastic formulation (Lame constants; both 0: total strain).
+struct LocalElasticity
+{
+  double lambda = 0.0; ///< Pa (2D: N/m)
+  double mu = 0.0;     ///< Pa (2D: N/m)
+  bool active() const { return lambda != 0.0 || mu != 0.0; }
+};
+
 template <int dim>
 class NonlocalMaterial : public MaterialWrapper<dim>
 {
@@ -41,8 +64,11 @@ public:
    * @param inner the material the averaged increments drive
    * @param averaging the operator on the IPs, in the order of the points evaluate() gets
    * @param alpha of the staggered rule, in [0, 1]
+   * @param elastic C_e of the local elastic formulation; default: none ([LSYF]'s total strain)
+   * @pre elastic.lambda >= 0, elastic.mu >= 0 (else std::invalid_argument)
    */
-  NonlocalMaterial(std::unique_ptr<Material<dim>> inner, NonlocalOperator<dim> averaging, double alpha);
+  NonlocalMaterial(std::unique_ptr<Material<dim>> inner, NonlocalOperator<dim> averaging, double alpha,
+                   LocalElasticity elastic = {});
 
   /// Sets every point's P (and statistics), F_nonlocal_trial and F_corotational_trial.
   /// @throws std::runtime_error if an averaged F has det <= 0, naming the point.
@@ -51,6 +77,7 @@ public:
 private:
   NonlocalOperator<dim> averaging_;
   double alpha_;
+  LocalElasticity elastic_;
   std::vector<dealii::Tensor<2, dim>> current_, lagged_, averaged_; ///< dF, dF at n+alpha, their average
   std::vector<IpState<dim>> seen_; ///< the points as the inner material sees them
 };

@@ -610,6 +610,14 @@ void Parameters::parse(dealii::ParameterHandler& prm, const std::string& file)
   material.parse_parameters(prm);
   elements.parse_parameters(prm);
   nonlocal.parse_parameters(prm);
+  const double material_modulus = material.density * std::pow(material.wave_speed(), 2);
+  if (nonlocal.elastic_p_wave_modulus() > material_modulus * (1.0 + 1e-12))
+    throw std::runtime_error(
+      "subsection Nonlocal: 'Local elastic modulus' = " + prm.get({"Nonlocal"}, "Local elastic modulus") +
+      " with 'Local Poisson ratio' = " + prm.get({"Nonlocal"}, "Local Poisson ratio") + " gives C_e a P-wave modulus " +
+      std::to_string(nonlocal.elastic_p_wave_modulus()) + " above the material's " + std::to_string(material_modulus) +
+      " (subsection Material: 'Stability modulus' for RVEs, lambda + 2 mu for neo-Hookean), with which the "
+      "stable step is estimated; lower the local elastic modulus or raise 'Stability modulus'");
   imperfection.parse_parameters(prm, base.string(), geometry.dimension);
   if (imperfection.active() && material.type != MaterialParameters::Type::rve)
     throw std::runtime_error("subsection Imperfection: 'Packing' = " + prm.get({"Imperfection"}, "Packing") +

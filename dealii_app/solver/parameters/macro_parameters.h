@@ -100,7 +100,18 @@ struct Nonlocal
   /// The neighbours' increments at n+alpha: (1 - alpha) x their last committed
   /// increment + alpha x their current one; the point's own is always current.
   double alpha;
+  /// What the average drives (nonlocal_material.h): the whole stress ([LSYF]), or only the
+  /// material's departure from a local elastic law C_e (Bazant & Lin 1988).
+  enum class Formulation
+  {
+    total_strain,
+    local_elastic
+  } formulation;
+  double elastic_modulus; ///< C_e's Young's modulus (Pa; 2D: N/m), local_elastic only
+  double poisson_ratio;   ///< C_e's Poisson ratio (2D: plane strain), local_elastic only
   bool active() const { return radius > 0.0; }
+  /// C_e's P-wave modulus lambda + 2 mu (0 for total_strain).
+  double elastic_p_wave_modulus() const;
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm);
 };

@@ -38,7 +38,35 @@ void Nonlocal::declare_parameters(dealii::ParameterHandler& prm)
                     "increment, so "
                     "even a homogeneous deformation is not reproduced (0.9 % of the step's strain "
                     "in the 3D patch test with alpha = 0.5).");
+  prm.declare_entry("Formulation", "total strain", Selection("total strain|local elastic"),
+                    "What the average drives. total strain ([LSYF]): the point's stress is its "
+                    "material's (RVE's) at the averaged F. This leaves the points' own strains "
+                    "nearly free in patterns that average out: with R of several IP spacings a soft "
+                    "point (a weak RVE, a band) strains several times as much as in the local "
+                    "continuum and its neighbours the other way (docs/user-guide.md, 'Nonlocal "
+                    "operator'). local elastic (Bazant & Lin 1988): the point's stress is the "
+                    "material's at the averaged F plus the elastic stress C_e : (E - Ebar) of the "
+                    "difference of the Green-Lagrange strains of the point's own F and the averaged "
+                    "one, C_e isotropic from 'Local elastic modulus' and 'Local Poisson ratio': the "
+                    "elastic strain is local and only the material's departure from C_e is averaged, "
+                    "so every strain pattern keeps at least its elastic stiffness. A homogeneous "
+                    "deformation gives Ebar = E: both formulations are the material itself there.");
+  prm.declare_entry("Local elastic modulus", "0", Double(0.0),
+                    "local elastic only: Young's modulus of C_e [Pa; 2D: N/m], > 0; the material's "
+                    "small-strain (unloading) stiffness, e.g. from a wave speed (its P-wave modulus "
+                    "lambda + 2 mu must not exceed the one the stable step is estimated with: "
+                    "subsection Material).");
+  prm.declare_entry("Local Poisson ratio", "0.2", Double(0.0, 0.4999),
+                    "local elastic only: Poisson's ratio of C_e (2D: plane strain).");
   prm.leave_subsection();
+}
+
+double Nonlocal::elastic_p_wave_modulus() const
+{
+  if (formulation != Formulation::local_elastic)
+    return 0.0;
+  const double nu = poisson_ratio;
+  return elastic_modulus * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
 }
 
 void Nonlocal::parse_parameters(dealii::ParameterHandler& prm)
@@ -47,7 +75,14 @@ void Nonlocal::parse_parameters(dealii::ParameterHandler& prm)
   radius = prm.get_double("Interaction radius");
   alpha = prm.get_double("Staggering");
   weight = prm.get("Weight") == "bell" ? Weight::bell : Weight::wendland;
+  formulation = prm.get("Formulation") == "local elastic" ? Formulation::local_elastic : Formulation::total_strain;
+  elastic_modulus = prm.get_double("Local elastic modulus");
+  poisson_ratio = prm.get_double("Local Poisson ratio");
   prm.leave_subsection();
+  if (formulation == Formulation::local_elastic && !(elastic_modulus > 0.0 && std::isfinite(elastic_modulus)))
+    throw std::runtime_error("subsection Nonlocal: 'Formulation' = local elastic needs 'Local elastic modulus' "
+                             "> 0 (the material's small-strain Young's modulus, Pa; 2D: N/m), not " +
+                             prm.get({"Nonlocal"}, "Local elastic modulus"));
   if (!std::isfinite(radius))
     throw std::runtime_error("subsection Nonlocal: 'Interaction radius' = " +
                              prm.get({"Nonlocal"}, "Interaction radius") +

@@ -38,7 +38,10 @@ FAMILIES = {"local": ("mesh_{}", "local"),                      # case pattern, 
             "nonlocal R = 2.5 mm": ("nonlocal_{}", "R 2.5"),
             "nonlocal R = 5 mm": ("nonlocal_{}_R5", "R 5"),
             "local, one point": ("mesh_{}_op", "local 1pt"),
-            "nonlocal R = 2.5 mm, one point": ("nonlocal_{}_op", "R 2.5 1pt")}
+            "nonlocal R = 2.5 mm, one point": ("nonlocal_{}_op", "R 2.5 1pt"),
+            "local elastic R = 2.5 mm": ("nonlocal_{}_le", "LE 2.5"),
+            "local elastic R = 5 mm": ("nonlocal_{}_R5_le", "LE 5"),
+            "local elastic R = 2.5 mm, one point": ("nonlocal_{}_op_le", "LE 2.5 1pt")}
 
 
 def spread_after_peak(curves, cases):
@@ -71,18 +74,29 @@ def main():
     families = {f: [pattern.format(m) for m in MESHES] for f, (pattern, _) in FAMILIES.items()}
     curves = {c: analyse.curve(c) if c in info else None for f in families.values() for c in f}
 
-    fig, ax = plt.subplots(figsize=(7, 4.5))
-    for fam, style in zip(families, ("--", "-", ":", "-.", (0, (1, 3)))):
+    fig, axs = plt.subplots(1, 2, figsize=(12, 4.5), sharey=True)
+    local_elastic = [f.startswith("local elastic") for f in families]
+    styles = ("--", "-", ":", "-.", (0, (1, 3)), "-", ":", (0, (1, 3)))
+    for fam, style, le in zip(families, styles, local_elastic):
+        ax = axs[1] if le else axs[0]
+        if fam == "local":  # the reference in both panels
+            for k, c in enumerate(families[fam]):
+                if curves[c]:
+                    axs[1].plot(100 * np.array(curves[c]["axial_strain"]), curves[c]["stress_ratio"],
+                                linestyle="--", color=f"C{k}", alpha=0.5, label=f"local {c.split('_')[1]}")
         for k, c in enumerate(families[fam]):
             if curves[c]:
                 ax.plot(100 * np.array(curves[c]["axial_strain"]), curves[c]["stress_ratio"], linestyle=style,
                         color=f"C{k}", label=f"{FAMILIES[fam][1]} {c.split('_')[1]}")
-    ax.set_xlabel("axial strain (%)")
-    ax.set_ylabel("average stress ratio")
-    ax.set_title("[LBS] biaxial test: local (dashed), nonlocal R = 2.5 mm (solid), 5 mm (dotted);\n"
-                 "one point per element: local (dash-dot), R = 2.5 mm (loose dots)", fontsize=8)
-    ax.legend(fontsize=7, ncol=2)
-    ax.grid(alpha=0.3)
+    axs[0].set_title("total strain ([LSYF]): local (dashed), R = 2.5 mm (solid), 5 mm (dotted);\n"
+                     "one point per element: local (dash-dot), R = 2.5 mm (loose dots)", fontsize=8)
+    axs[1].set_title("local elastic: R = 2.5 mm (solid), 5 mm (dotted), one point R = 2.5 mm\n"
+                     "(loose dots); local (faint dashed)", fontsize=8)
+    for ax in axs:
+        ax.set_xlabel("axial strain (%)")
+        ax.legend(fontsize=7, ncol=2)
+        ax.grid(alpha=0.3)
+    axs[0].set_ylabel("average stress ratio")
     fig.tight_layout()
     fig.savefig(os.path.join(results, "nonlocal_curves.png"), dpi=120)
 
@@ -140,10 +154,11 @@ def main():
     shown = [x for x in widths if x[2] == "F"]
     if shown:
         cols = sorted({x[0].split("_")[1] for x in shown}, key=MESHES.index)
-        fig, axs = plt.subplots(len(families), len(cols) + (dns is not None),
-                                figsize=(2.4 * (len(cols) + 1), 4 * len(families)),
+        rows = [f for f in families if any(x[1] == f for x in shown)]
+        fig, axs = plt.subplots(len(rows), len(cols) + (dns is not None),
+                                figsize=(2.4 * (len(cols) + 1), 4 * len(rows)),
                                 squeeze=False)
-        for row, fam in enumerate(families):
+        for row, fam in enumerate(rows):
             for col, m in enumerate(cols):
                 a = axs[row][col]
                 hit = [x for x in shown if x[1] == fam and x[0] == FAMILIES[fam][0].format(m)]

@@ -272,6 +272,10 @@ problem4() {
   problem4_table
 }
 problem3_radii=(0 0.015 0.025)
+# The local elastic formulation (user guide, 'Nonlocal operator') with C_e of [LSYF]'s effective
+# E = 584 MPa, nu = 0.2 (physics.md 3.2; P-wave modulus 649 MPa against the measured 668-703 MPa
+# of dynamic_modulus.txt): the sed expression after the radius is set
+local_elastic='s/^\(  set Interaction radius = .*\)$/\1\n  set Formulation = local elastic\n  set Local elastic modulus = 5.84e8\n  set Local Poisson ratio = 0.2/'
 # submit_full NAME PRM [sed expression]: the case at the paper's size (lsyf_4096) in
 # results/full/NAME/ as a SLURM job of 16 ranks, or its sbatch command printed
 submit_full() {
@@ -288,6 +292,7 @@ problem3_full() {
     $py "$root/rve_templates/weaken_packing.py" "$root/rve_templates/packings/lsyf_4096" "$results/full/lsyf_4096_weak" 25; }
   local r
   for r in "${problem3_radii[@]}"; do submit_full "problem3_R$r" "$here/problem3.prm" "s/RADIUS/$r/"; done
+  submit_full problem3_R0.025_le "$here/problem3.prm" "s/RADIUS/0.025/; $local_elastic"
 }
 problem4_full() {
   local c name x y radius
@@ -301,6 +306,7 @@ problem3() {
   for r in "${problem3_radii[@]}"; do
     run_macro "problem3_R$r" "$here/problem3.prm" 1 "s/RADIUS/$r/"
   done
+  run_macro problem3_R0.025_le "$here/problem3.prm" 1 "s/RADIUS/0.025/; $local_elastic"
   problem3_table
 }
 problem3_table() {

@@ -41,7 +41,7 @@ FAMILIES = {"local": ("mesh_{}", "local"),                      # case pattern, 
             "nonlocal R = 2.5 mm, one point": ("nonlocal_{}_op", "R 2.5 1pt"),
             "local elastic R = 2.5 mm": ("nonlocal_{}_le", "LE 2.5"),
             "local elastic R = 5 mm": ("nonlocal_{}_R5_le", "LE 5"),
-            "local elastic R = 2.5 mm, one point": ("nonlocal_{}_op_le", "LE 2.5 1pt")}
+            "local elastic R = 5 mm, one point": ("nonlocal_{}_op_R5_le", "LE 5 1pt")}
 
 
 def spread_after_peak(curves, cases):
@@ -90,7 +90,7 @@ def main():
                         color=f"C{k}", label=f"{FAMILIES[fam][1]} {c.split('_')[1]}")
     axs[0].set_title("total strain ([LSYF]): local (dashed), R = 2.5 mm (solid), 5 mm (dotted);\n"
                      "one point per element: local (dash-dot), R = 2.5 mm (loose dots)", fontsize=8)
-    axs[1].set_title("local elastic: R = 2.5 mm (solid), 5 mm (dotted), one point R = 2.5 mm\n"
+    axs[1].set_title("local elastic: R = 2.5 mm (solid), 5 mm (dotted), one point R = 5 mm\n"
                      "(loose dots); local (faint dashed)", fontsize=8)
     for ax in axs:
         ax.set_xlabel("axial strain (%)")

@@ -35,7 +35,8 @@ import numpy as np  # noqa: E402
 
 from band_tools import inplane_band, plot_curves  # noqa: E402
 
-CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "problem3_R0.025"}
+CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "problem3_R0.025",
+         "R = 25 mm, local elastic": "problem3_R0.025_le"}
 WEAK_POINT = np.array([0.054, 0.025])  # problem3.prm, subsection Imperfection
 HEIGHT, SHEAR = 0.0506, 0.08           # the top's displacement is SHEAR * HEIGHT at the end
 BAND_ROWS = 4

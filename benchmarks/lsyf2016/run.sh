@@ -254,6 +254,13 @@ mkdir -p "$results"
 # Problem 4's cases: NAME CELLS_X CELLS_Y RADIUS (the same here and with --full)
 problem4_cases=("problem4_local_4x8 4 8 0" "problem4_R11.8_4x8 4 8 0.0118" "problem4_local_6x12 6 12 0"
                 "problem4_R11.8_6x12 6 12 0.0118" "problem4_local_8x16 8 16 0" "problem4_R11.8_8x16 8 16 0.0118")
+# ... and in the local elastic formulation with R = 20 mm (two element sizes of 4x8, so that
+# every mesh's neighbours count; README, 'Problem 4')
+problem4_le_cases=("problem4_R20_le_4x8 4 8 0.02" "problem4_R20_le_6x12 6 12 0.02" "problem4_R20_le_8x16 8 16 0.02")
+# The local elastic formulation (user guide, 'Nonlocal operator') with C_e of [LSYF]'s effective
+# E = 584 MPa, nu = 0.2 (physics.md 3.2; P-wave modulus 649 MPa against the measured 668-703 MPa
+# of dynamic_modulus.txt): the sed expression after the radius is set
+local_elastic='s/^\(  set Interaction radius = .*\)$/\1\n  set Formulation = local elastic\n  set Local elastic modulus = 5.84e8\n  set Local Poisson ratio = 0.2/'
 # problem4_edit CELLS_X CELLS_Y RADIUS PACKING: problem4.prm's substitutions
 problem4_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; s#packings/PACKING#packings/$4#"; }
 # problem4_case NAME CELLS_X CELLS_Y RADIUS [sed expression]: a run that stops
@@ -269,13 +276,10 @@ problem4() {
   problem4_case problem4_2x4_rate1 2 4 0 "s#set End time   = 0.015#set End time   = 0.06#; s#-4.8e-3 \* t / 0.015#-4.8e-3 * t / 0.06#"
   local c
   for c in "${problem4_cases[@]}"; do problem4_case $c; done
+  for c in "${problem4_le_cases[@]}"; do problem4_case $c "$local_elastic"; done
   problem4_table
 }
 problem3_radii=(0 0.015 0.025)
-# The local elastic formulation (user guide, 'Nonlocal operator') with C_e of [LSYF]'s effective
-# E = 584 MPa, nu = 0.2 (physics.md 3.2; P-wave modulus 649 MPa against the measured 668-703 MPa
-# of dynamic_modulus.txt): the sed expression after the radius is set
-local_elastic='s/^\(  set Interaction radius = .*\)$/\1\n  set Formulation = local elastic\n  set Local elastic modulus = 5.84e8\n  set Local Poisson ratio = 0.2/'
 # submit_full NAME PRM [sed expression]: the case at the paper's size (lsyf_4096) in
 # results/full/NAME/ as a SLURM job of 16 ranks, or its sbatch command printed
 submit_full() {
@@ -299,6 +303,10 @@ problem4_full() {
   for c in "${problem4_cases[@]}"; do
     read -r name x y radius <<< "$c"
     submit_full "$name" "$here/problem4.prm" "$(problem4_edit "$x" "$y" "$radius" lsyf_4096)"
+  done
+  for c in "${problem4_le_cases[@]}"; do
+    read -r name x y radius <<< "$c"
+    submit_full "$name" "$here/problem4.prm" "$(problem4_edit "$x" "$y" "$radius" lsyf_4096); $local_elastic"
   done
 }
 problem3() {

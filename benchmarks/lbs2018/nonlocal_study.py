@@ -118,6 +118,21 @@ def main():
             print(f"| {label} | {fam} | {' '.join(c.split('_')[1] for c in have)} | {100 * pts[0][0]:.1f} % "
                   f"| {100 * s.mean():.1f} % | {100 * s.max():.1f} % |")
 
+    # the same spreads step by step from 5 % on, every family on one window (2x4 and finer)
+    print("\n| family (2x4 and finer) | " + " | ".join(f"{e:.1f} %" for e in np.arange(5.0, 10.01, 0.5)) + " |\n"
+          + "| --- " * 12 + "|")
+    for fam in families:
+        have = [c for c in (FAMILIES[fam][0].format(m) for m in MESHES[2:]) if curves.get(c)]
+        if len(have) < 2:
+            continue
+        row = []
+        for e in np.arange(0.05, 0.1001, 0.005):
+            r = [curves[c]["stress_ratio"][k] for c in have
+                 for k in [int(np.argmin(np.abs(np.array(curves[c]["axial_strain"]) - e)))]
+                 if abs(curves[c]["axial_strain"][k] - e) < 1e-4]
+            row.append(f"{100 * (max(r) - min(r)) / np.mean(r):.1f} %" if len(r) == len(have) else "-")
+        print(f"| {fam} ({' '.join(c.split('_')[1] for c in have)}) | " + " | ".join(row) + " |")
+
     # band widths: the last load step's increment (bands move: over several steps the
     # increments of different bands add up), of F and, with the operator, of the F the RVEs saw
     widths = []

@@ -36,7 +36,8 @@ import numpy as np  # noqa: E402
 from band_tools import inplane_band, plot_curves  # noqa: E402
 
 CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "problem3_R0.025",
-         "R = 25 mm, local elastic": "problem3_R0.025_le"}
+         "R = 25 mm, local elastic 584 MPa": "problem3_R0.025_le584",
+         "R = 25 mm, local elastic 50 MPa": "problem3_R0.025_le50"}
 WEAK_POINT = np.array([0.054, 0.025])  # problem3.prm, subsection Imperfection
 HEIGHT, SHEAR = 0.0506, 0.08           # the top's displacement is SHEAR * HEIGHT at the end
 BAND_ROWS = 4

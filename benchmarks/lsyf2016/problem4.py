@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """[LSYF] problem 4 (issue 37): plane-strain biaxial compression, local
-against nonlocal on three meshes. Reads RESULTS/problem4_{local,R11.8,R20_le}_MESH/
+against nonlocal on three meshes. Reads RESULTS/problem4_{local,R11.8,R20_le50}_MESH/
 and problem4_2x4_rate{4,1}/ (run.sh problem4), prints the tables of the
 README and writes into RESULTS:
   problem4_curves.png   stress ratio against axial strain, every case
@@ -38,7 +38,7 @@ from band_tools import inplane_band, plot_curves  # noqa: E402
 WIDTH, DEPTH, P_CONFINING = 0.04, 0.005, 4.16e5
 MESHES = ["4x8", "6x12", "8x16"]
 FAMILIES = {"local": "problem4_local_{}", "nonlocal R = 11.8 mm": "problem4_R11.8_{}",
-            "local elastic R = 20 mm": "problem4_R20_le_{}"}
+            "local elastic R = 20 mm": "problem4_R20_le50_{}"}
 BAND_ROWS = 4  # the band of the last BAND_ROWS rows' increment (1 % of axial strain)
 
 

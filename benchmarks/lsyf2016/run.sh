@@ -254,13 +254,17 @@ mkdir -p "$results"
 # Problem 4's cases: NAME CELLS_X CELLS_Y RADIUS (the same here and with --full)
 problem4_cases=("problem4_local_4x8 4 8 0" "problem4_R11.8_4x8 4 8 0.0118" "problem4_local_6x12 6 12 0"
                 "problem4_R11.8_6x12 6 12 0.0118" "problem4_local_8x16 8 16 0" "problem4_R11.8_8x16 8 16 0.0118")
-# ... and in the local elastic formulation with R = 20 mm (two element sizes of 4x8, so that
-# every mesh's neighbours count; README, 'Problem 4')
-problem4_le_cases=("problem4_R20_le_4x8 4 8 0.02" "problem4_R20_le_6x12 6 12 0.02" "problem4_R20_le_8x16 8 16 0.02")
-# The local elastic formulation (user guide, 'Nonlocal operator') with C_e of [LSYF]'s effective
-# E = 584 MPa, nu = 0.2 (physics.md 3.2; P-wave modulus 649 MPa against the measured 668-703 MPa
-# of dynamic_modulus.txt): the sed expression after the radius is set
-local_elastic='s/^\(  set Interaction radius = .*\)$/\1\n  set Formulation = local elastic\n  set Local elastic modulus = 5.84e8\n  set Local Poisson ratio = 0.2/'
+# ... and in the local elastic formulation (user guide, 'Nonlocal operator') with R = 20 mm (two
+# element sizes of 4x8, so that every mesh's neighbours count; README, 'Problem 4')
+problem4_le_cases=("problem4_R20_le50_4x8 4 8 0.02" "problem4_R20_le50_8x16 8 16 0.02" "problem4_R20_le50_6x12 6 12 0.02")
+# local_elastic E: the sed expression, after the radius is set, of the local elastic formulation with
+# C_e of Young's modulus E (Pa) and nu = 0.2. README, 'The local elastic formulation': E = 5.84e8 is
+# [LSYF]'s effective elastic modulus (physics.md 3.2; P-wave modulus 649 MPa against the measured
+# 668-703 MPa of dynamic_modulus.txt), E = 5e7 the order of the RVE's secant loading stiffness to
+# its peak (problem 4's element: 98 MPa to 1 %; problem 3: G = 9-18 MPa to 1-2 % of shear)
+local_elastic() {
+  echo "s/^\(  set Interaction radius = .*\)\$/\1\n  set Formulation = local elastic\n  set Local elastic modulus = $1\n  set Local Poisson ratio = 0.2/"
+}
 # problem4_edit CELLS_X CELLS_Y RADIUS PACKING: problem4.prm's substitutions
 problem4_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; s#packings/PACKING#packings/$4#"; }
 # problem4_case NAME CELLS_X CELLS_Y RADIUS [sed expression]: a run that stops
@@ -276,7 +280,7 @@ problem4() {
   problem4_case problem4_2x4_rate1 2 4 0 "s#set End time   = 0.015#set End time   = 0.06#; s#-4.8e-3 \* t / 0.015#-4.8e-3 * t / 0.06#"
   local c
   for c in "${problem4_cases[@]}"; do problem4_case $c; done
-  for c in "${problem4_le_cases[@]}"; do problem4_case $c "$local_elastic"; done
+  for c in "${problem4_le_cases[@]}"; do problem4_case $c "$(local_elastic 5e7)"; done
   problem4_table
 }
 problem3_radii=(0 0.015 0.025)
@@ -296,7 +300,8 @@ problem3_full() {
     $py "$root/rve_templates/weaken_packing.py" "$root/rve_templates/packings/lsyf_4096" "$results/full/lsyf_4096_weak" 25; }
   local r
   for r in "${problem3_radii[@]}"; do submit_full "problem3_R$r" "$here/problem3.prm" "s/RADIUS/$r/"; done
-  submit_full problem3_R0.025_le "$here/problem3.prm" "s/RADIUS/0.025/; $local_elastic"
+  submit_full problem3_R0.025_le584 "$here/problem3.prm" "s/RADIUS/0.025/; $(local_elastic 5.84e8)"
+  submit_full problem3_R0.025_le50 "$here/problem3.prm" "s/RADIUS/0.025/; $(local_elastic 5e7)"
 }
 problem4_full() {
   local c name x y radius
@@ -306,7 +311,7 @@ problem4_full() {
   done
   for c in "${problem4_le_cases[@]}"; do
     read -r name x y radius <<< "$c"
-    submit_full "$name" "$here/problem4.prm" "$(problem4_edit "$x" "$y" "$radius" lsyf_4096); $local_elastic"
+    submit_full "$name" "$here/problem4.prm" "$(problem4_edit "$x" "$y" "$radius" lsyf_4096); $(local_elastic 5e7)"
   done
 }
 problem3() {
@@ -314,7 +319,8 @@ problem3() {
   for r in "${problem3_radii[@]}"; do
     run_macro "problem3_R$r" "$here/problem3.prm" 1 "s/RADIUS/$r/"
   done
-  run_macro problem3_R0.025_le "$here/problem3.prm" 1 "s/RADIUS/0.025/; $local_elastic"
+  run_macro problem3_R0.025_le584 "$here/problem3.prm" 1 "s/RADIUS/0.025/; $(local_elastic 5.84e8)"
+  run_macro problem3_R0.025_le50 "$here/problem3.prm" 1 "s/RADIUS/0.025/; $(local_elastic 5e7)"
   problem3_table
 }
 problem3_table() {

@@ -52,10 +52,12 @@ void Nonlocal::declare_parameters(dealii::ParameterHandler& prm)
                     "so every strain pattern keeps at least its elastic stiffness. A homogeneous "
                     "deformation gives Ebar = E: both formulations are the material itself there.");
   prm.declare_entry("Local elastic modulus", "0", Double(0.0),
-                    "local elastic only: Young's modulus of C_e [Pa; 2D: N/m], > 0; the material's "
-                    "small-strain (unloading) stiffness, e.g. from a wave speed (its P-wave modulus "
-                    "lambda + 2 mu must not exceed the one the stable step is estimated with: "
-                    "subsection Material).");
+                    "local elastic only: Young's modulus of C_e [Pa; 2D: N/m], > 0: every strain "
+                    "pattern shorter than R responds with C_e, so use the RVE's secant stiffness on "
+                    "its loading branch to the peak, not its elastic unloading stiffness (tens of "
+                    "times larger for grains: it forces a homogeneous deformation). Its P-wave "
+                    "modulus lambda + 2 mu must not exceed the one the stable step is estimated "
+                    "with (subsection Material).");
   prm.declare_entry("Local Poisson ratio", "0.2", Double(0.0, 0.4999),
                     "local elastic only: Poisson's ratio of C_e (2D: plane strain).");
   prm.leave_subsection();

@@ -135,6 +135,18 @@ def main():
         w.writerow(["case", "x", "y", "in_band", "porosity", "coordination", "sliding_fraction", "mean_rotation"])
         w.writerows(rows)
 
+    # the soft mode of the total-strain average (user guide, 'Nonlocal operator'): the elements' own
+    # signed shear increment, the weak one against the rest
+    print(f"\n## the elements' signed shear increment dF12 + dF21 over the last {BAND_ROWS} rows")
+    print("| case | weak IP | mean | largest | smallest | IPs shearing backwards |")
+    print("|---|---|---|---|---|---|")
+    for k in done:
+        with h5py.File(os.path.join(results, CASES[k], "out", "history.h5"), "r") as h:
+            F = h["F"][()].reshape(len(h["step"]), -1, 3, 3)
+        dF = F[-1] - F[-1 - BAND_ROWS]
+        g = dF[:, 0, 1] + dF[:, 1, 0]
+        print(f"| {k} | {g[weak]:.4f} | {g.mean():.4f} | {g.max():.4f} | {g.min():.4f} | {int((g < 0).sum())} of {len(g)} |")
+
     print("\n## cost (one rank each on the 2-core VM, walls shared with other runs)")
     print("| case | wall (s) | RVEs | DEM steps (all RVEs) |")
     print("|---|---|---|---|")

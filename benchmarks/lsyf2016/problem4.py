@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """[LSYF] problem 4 (issue 37): plane-strain biaxial compression, local
-against nonlocal on three meshes. Reads RESULTS/problem4_{local,R11.8,R11.8_le50}_MESH/,
-problem4_R20_le50_4x8/ and problem4_2x4_rate{4,1}/ (run.sh problem4), prints the tables of the
+against nonlocal on three meshes. Reads RESULTS/problem4_{local,R11.8}_MESH/, the local
+elastic runs problem4_R*_le*/ and problem4_2x4_rate{4,1}/ (run.sh problem4), prints the tables of the
 README and writes into RESULTS:
   problem4_curves.png   stress ratio against axial strain, every case
   problem4_bands.png    the in-plane shear strain increment from 5 to 6 %
@@ -37,8 +37,11 @@ from band_tools import inplane_band, plot_curves  # noqa: E402
 
 WIDTH, DEPTH, P_CONFINING = 0.04, 0.005, 4.16e5
 MESHES = ["4x8", "6x12", "8x16"]
-FAMILIES = {"local": "problem4_local_{}", "nonlocal R = 11.8 mm": "problem4_R11.8_{}",
-            "local elastic R = 11.8 mm": "problem4_R11.8_le50_{}"}
+FAMILIES = {"local": "problem4_local_{}", "nonlocal R = 11.8 mm": "problem4_R11.8_{}"}
+# single runs of the local elastic formulation (C_e's E in MPa)
+LOCAL_ELASTIC = {"local elastic 50 MPa, R = 11.8 mm 8x16": "problem4_R11.8_le50_8x16",
+                 "local elastic 50 MPa, R = 20 mm 4x8": "problem4_R20_le50_4x8",
+                 "local elastic 5 MPa, R = 11.8 mm 8x16": "problem4_R11.8_le5_8x16"}
 BAND_ROWS = 4  # the band of the last BAND_ROWS rows' increment (1 % of axial strain)
 
 
@@ -83,7 +86,7 @@ def main():
     results = sys.argv[1]
     cases = {f"{fam} {m}": os.path.join(results, pat.format(m)) for fam, pat in FAMILIES.items() for m in MESHES}
     cases.update({f"local 2x4, {r} /s": os.path.join(results, f"problem4_2x4_rate{r}") for r in (4, 1)})
-    cases["local elastic R = 20 mm 4x8"] = os.path.join(results, "problem4_R20_le50_4x8")
+    cases.update({k: os.path.join(results, c) for k, c in LOCAL_ELASTIC.items()})
     # finished runs, and runs that stopped (an RVE failed) with the rows they converged
     done = {k: d for k, d in cases.items() if os.path.exists(os.path.join(d, "wall_s")) or stopped(d)}
     curves = {k: curve(d) for k, d in done.items()}

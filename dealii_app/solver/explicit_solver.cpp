@@ -195,10 +195,9 @@ LocalElasticity ExplicitSolver<dim>::local_elasticity() const
   const Nonlocal& n = prm_.nonlocal;
   if (n.formulation != Nonlocal::Formulation::local_elastic)
     return {};
-  const double nu = n.poisson_ratio;
-  pcout_ << "nonlocal operator: local elastic formulation, C_e with E = " << n.elastic_modulus << ", nu = " << nu
-         << std::endl;
-  return {n.elastic_modulus * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)), n.elastic_modulus / (2.0 * (1.0 + nu))};
+  pcout_ << "nonlocal operator: local elastic formulation, C_e with E = " << n.elastic_modulus
+         << ", nu = " << n.poisson_ratio << std::endl;
+  return {n.elastic_lambda(), n.elastic_mu()};
 }
 
 template <int dim>

@@ -110,8 +110,11 @@ struct Nonlocal
   double elastic_modulus; ///< C_e's Young's modulus (Pa; 2D: N/m), local_elastic only
   double poisson_ratio;   ///< C_e's Poisson ratio (2D: plane strain), local_elastic only
   bool active() const { return radius > 0.0; }
+  /// C_e's Lame constants from its E and nu (2D: plane strain); 0 for total_strain.
+  double elastic_lambda() const;
+  double elastic_mu() const;
   /// C_e's P-wave modulus lambda + 2 mu (0 for total_strain).
-  double elastic_p_wave_modulus() const;
+  double elastic_p_wave_modulus() const { return elastic_lambda() + 2.0 * elastic_mu(); }
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm);
 };

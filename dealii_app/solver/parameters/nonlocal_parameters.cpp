@@ -63,12 +63,16 @@ void Nonlocal::declare_parameters(dealii::ParameterHandler& prm)
   prm.leave_subsection();
 }
 
-double Nonlocal::elastic_p_wave_modulus() const
+double Nonlocal::elastic_lambda() const
 {
   if (formulation != Formulation::local_elastic)
     return 0.0;
-  const double nu = poisson_ratio;
-  return elastic_modulus * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
+  return elastic_modulus * poisson_ratio / ((1.0 + poisson_ratio) * (1.0 - 2.0 * poisson_ratio));
+}
+
+double Nonlocal::elastic_mu() const
+{
+  return formulation == Formulation::local_elastic ? elastic_modulus / (2.0 * (1.0 + poisson_ratio)) : 0.0;
 }
 
 void Nonlocal::parse_parameters(dealii::ParameterHandler& prm)

@@ -261,7 +261,7 @@ problem4_cases=("problem4_local_4x8 4 8 0" "problem4_R11.8_4x8 4 8 0.0118" "prob
 problem4_le_cases=("problem4_R11.8_le50_8x16 8 16 0.0118 5e7" "problem4_R20_le50_4x8 4 8 0.02 5e7"
                    "problem4_R11.8_le5_8x16 8 16 0.0118 5e6")
 # local_elastic E: the sed expression, after the radius is set, of the local elastic formulation with
-# C_e of Young's modulus E (Pa) and nu = 0.2. README, 'The local elastic formulation': E = 5.84e8 is
+# C_e of Young's modulus E (Pa) and nu = 0.2 (README, problems 3 and 4): E = 5.84e8 is
 # [LSYF]'s effective elastic modulus (physics.md 3.2; P-wave modulus 649 MPa against the measured
 # 668-703 MPa of dynamic_modulus.txt), E = 5e7 the order of the RVE's secant loading stiffness to
 # its peak (problem 4's element: 98 MPa to 1 %; problem 3: G = 9-18 MPa to 1-2 % of shear)

@@ -29,10 +29,12 @@ def inplane_band(history, rows):
 
 
 def plot_curves(curves, xlabel, ylabel, path, dashed=lambda label: False):
-    """One line per {label: (strain, value)}, strain in per cent on the axis."""
+    """One line per {label: (strain, value)}, strain in per cent on the axis; lines past the
+    tenth colour dotted (the colour cycle repeats)."""
     plt.figure(figsize=(6, 4))
-    for label, (x, y) in curves.items():
-        plt.plot(100 * np.asarray(x), y, "--" if dashed(label) else "-", label=label)
+    for k, (label, (x, y)) in enumerate(curves.items()):
+        style = "--" if dashed(label) else ":" if k >= 10 else "-"
+        plt.plot(100 * np.asarray(x), y, style, label=label)
     plt.xlabel(xlabel)
     plt.ylabel(ylabel)
     plt.legend(fontsize=6)

@@ -41,7 +41,8 @@ FAMILIES = {"local": ("mesh_{}", "local"),                      # case pattern, 
             "nonlocal R = 2.5 mm, one point": ("nonlocal_{}_op", "R 2.5 1pt"),
             "local elastic R = 2.5 mm": ("nonlocal_{}_le", "LE 2.5"),
             "local elastic R = 5 mm": ("nonlocal_{}_R5_le", "LE 5"),
-            "local elastic R = 5 mm, one point": ("nonlocal_{}_op_R5_le", "LE 5 1pt")}
+            "local elastic R = 5 mm, one point": ("nonlocal_{}_op_R5_le", "LE 5 1pt"),
+            "local elastic R = 2.5 mm, C_e / 2": ("nonlocal_{}_le3e6", "LE 2.5 C/2")}
 
 
 def spread_after_peak(curves, cases):
@@ -76,7 +77,7 @@ def main():
 
     fig, axs = plt.subplots(1, 2, figsize=(12, 4.5), sharey=True)
     local_elastic = [f.startswith("local elastic") for f in families]
-    styles = ("--", "-", ":", "-.", (0, (1, 3)), "-", ":", (0, (1, 3)))
+    styles = ("--", "-", ":", "-.", (0, (1, 3)), "-", ":", (0, (1, 3)), "-.")
     for fam, style, le in zip(families, styles, local_elastic):
         ax = axs[1] if le else axs[0]
         if fam == "local":  # the reference in both panels
@@ -90,8 +91,8 @@ def main():
                         color=f"C{k}", label=f"{FAMILIES[fam][1]} {c.split('_')[1]}")
     axs[0].set_title("total strain ([LSYF]): local (dashed), R = 2.5 mm (solid), 5 mm (dotted);\n"
                      "one point per element: local (dash-dot), R = 2.5 mm (loose dots)", fontsize=8)
-    axs[1].set_title("local elastic: R = 2.5 mm (solid), 5 mm (dotted), one point R = 5 mm\n"
-                     "(loose dots); local (faint dashed)", fontsize=8)
+    axs[1].set_title("local elastic: R = 2.5 mm (solid; C_e / 2 dash-dot), 5 mm (dotted),\n"
+                     "one point R = 5 mm (loose dots); local (faint dashed)", fontsize=8)
     for ax in axs:
         ax.set_xlabel("axial strain (%)")
         ax.legend(fontsize=7, ncol=2)

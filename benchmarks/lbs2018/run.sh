@@ -10,11 +10,12 @@
 #   nonlocal_1x1 ... nonlocal_4x8,        the meshes with the nonlocal operator,
 #   nonlocal_8x16                         R = 2.5 mm (README, "Local against
 #                                         nonlocal"; 8x16 not in 'all')
-#   nonlocal_MESH[_op][_RN][_aA][_le]     R = N mm (and Staggering = A), e.g.
+#   nonlocal_MESH[_op][_RN][_aA][_le[E]]  R = N mm (and Staggering = A), e.g.
 #                                         nonlocal_4x8_R5; _op (also mesh_MESH_op):
 #                                         one point per element; _le: Formulation =
-#                                         local elastic (not in 'all'; README,
-#                                         "Local against nonlocal")
+#                                         local elastic, C_e of E = 6e6 N/m, or E
+#                                         (not in 'all'; README, "Local against
+#                                         nonlocal")
 #   mesh_4x8_steps22                      4x8 with stage 2 in 0.25 % steps to
 #                                         5.5 % (load-step check of the peak)
 #   dns_A dns_B                           direct numerical simulations
@@ -54,8 +55,8 @@ while [[ $# -gt 0 ]]; do
     --mts20) mts20=1; shift ;;
     all) cases+=("${all_cases[@]}"); shift ;;
     -h|--help) usage ;;
-    *) [[ " ${all_cases[*]} " == *" $1 "* || $1 =~ ^(mesh|nonlocal)_(1x1|1x2|2x4|4x8|8x16)(_op)?(_R[0-9.]+)?(_a[0-9.]+)?(_le)?$ ]] ||
-         { echo "run.sh: unknown case '$1' (cases: ${all_cases[*]}, mesh_MESH[_op], nonlocal_MESH[_op][_RN][_aA][_le], all)" >&2; exit 2; }
+    *) [[ " ${all_cases[*]} " == *" $1 "* || $1 =~ ^(mesh|nonlocal)_(1x1|1x2|2x4|4x8|8x16)(_op)?(_R[0-9.]+)?(_a[0-9.]+)?(_le[0-9.e]*)?$ ]] ||
+         { echo "run.sh: unknown case '$1' (cases: ${all_cases[*]}, mesh_MESH[_op], nonlocal_MESH[_op][_RN][_aA][_le[E]], all)" >&2; exit 2; }
        cases+=("$1"); shift ;;
   esac
 done
@@ -84,18 +85,20 @@ overrides() {
   [[ $1 != *_op* ]] || printf 'subsection Finite elements\n  set Quadrature = one point\nend\n'
   # 2R = 5 mm, the side of one RVE (README, "Local against nonlocal"); nonlocal_MESH_RN: R = N mm
   # (_aA: Staggering = A); _le: the local elastic formulation with C_e of E = 6e6 N/m (the RVE's
-  # secant modulus over the first 0.5 % of stage 2 of mesh_1x1, 5.7e6 N/m, rounded up), nu = 0.2
+  # secant modulus over the first 0.5 % of stage 2 of mesh_1x1, 5.7e6 N/m, rounded up), nu = 0.2;
+  # _leE: with E N/m
   if [[ $1 == nonlocal_* ]]; then
-    local radius=0.0025 alpha=1 part
+    local radius=0.0025 alpha=1 part modulus=""
     for part in $(tr _ ' ' <<<"${1#nonlocal_*_}"); do
       case "$part" in
         R*) radius=$(awk -v r="${part#R}" 'BEGIN {print r / 1000}') ;;
         a*) alpha=${part#a} ;;
+        le*) modulus=${part#le}; modulus=${modulus:-6e6} ;;
       esac
     done
     printf 'subsection Nonlocal\n  set Interaction radius = %s\n  set Staggering = %s\n' "$radius" "$alpha"
-    [[ $1 != *_le ]] ||
-      printf '  set Formulation = local elastic\n  set Local elastic modulus = 6e6\n  set Local Poisson ratio = 0.2\n'
+    [[ -z $modulus ]] ||
+      printf '  set Formulation = local elastic\n  set Local elastic modulus = %s\n  set Local Poisson ratio = 0.2\n' "$modulus"
     printf 'end\n'
   fi
   # Particles and contact forces of every IP at 9 % axial strain (step 10 + 18)

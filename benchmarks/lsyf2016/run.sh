@@ -264,7 +264,7 @@ problem4_le_cases=("problem4_R11.8_le50_8x16 8 16 0.0118 5e7" "problem4_R20_le50
 # C_e of Young's modulus E (Pa) and nu = 0.2 (README, problems 3 and 4): E = 5.84e8 is
 # [LSYF]'s effective elastic modulus (physics.md 3.2; P-wave modulus 649 MPa against the measured
 # 668-703 MPa of dynamic_modulus.txt), E = 5e7 the order of the RVE's secant loading stiffness to
-# its peak (problem 4's element: 98 MPa to 1 %; problem 3: G = 9-18 MPa to 1-2 % of shear)
+# its peak (problem 4's local 4x8 specimen: 98 MPa to 1 %; problem 3: G = 9-18 MPa to 1-2 % of shear)
 local_elastic() {
   echo "s/^\(  set Interaction radius = .*\)\$/\1\n  set Formulation = local elastic\n  set Local elastic modulus = $1\n  set Local Poisson ratio = 0.2/"
 }

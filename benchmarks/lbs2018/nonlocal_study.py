@@ -184,7 +184,7 @@ def main():
                 c, _, _, h, e, w, ang, pts, g = hit[0]
                 sc = a.scatter(1e3 * pts[:, 0], 1e3 * pts[:, 1], c=g, s=2400 / len(pts) ** 0.9 + 4,
                                marker="s", cmap="viridis")
-                a.set_title(f"{fam} {m}, step to {100 * e:.1f} %\n"
+                a.set_title(f"{FAMILIES[fam][1]} {m}, step to {100 * e:.1f} %\n"
                             + ("" if np.isnan(w) else f"band {w * 1e3:.1f} mm"), fontsize=8)
                 a.set_aspect("equal")
                 a.set_xlim(0, 10)

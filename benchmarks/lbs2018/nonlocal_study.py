@@ -45,6 +45,12 @@ FAMILIES = {"local": ("mesh_{}", "local"),                      # case pattern, 
             "local elastic R = 2.5 mm, C_e / 2": ("nonlocal_{}_le3e6", "LE 2.5 C/2")}
 
 
+def relative_spread(r, axis=None):
+    """(max - min) / mean of the stress ratios `r` (over `axis`)."""
+    r = np.asarray(r)
+    return (r.max(axis=axis) - r.min(axis=axis)) / r.mean(axis=axis)
+
+
 def spread_after_peak(curves, cases):
     """[(axial strain, (max - min)/mean)] over `cases` from the peak of their mean to the end."""
     have = [c for c in cases if curves.get(c)]
@@ -54,7 +60,7 @@ def spread_after_peak(curves, cases):
     r = np.array([curves[c]["stress_ratio"][:n] for c in have])
     eps = np.array(curves[have[0]]["axial_strain"][:n])
     peak = int(np.argmax(r.mean(axis=0)))
-    s = (r.max(axis=0) - r.min(axis=0)) / r.mean(axis=0)
+    s = relative_spread(r, axis=0)
     return [(eps[k], s[k]) for k in range(peak, n)], have
 
 
@@ -131,7 +137,7 @@ def main():
             r = [curves[c]["stress_ratio"][k] for c in have
                  for k in [int(np.argmin(np.abs(np.array(curves[c]["axial_strain"]) - e)))]
                  if abs(curves[c]["axial_strain"][k] - e) < 1e-4]
-            row.append(f"{100 * (max(r) - min(r)) / np.mean(r):.1f} %" if len(r) == len(have) else "-")
+            row.append(f"{100 * relative_spread(r):.1f} %" if len(r) == len(have) else "-")
         print(f"| {fam} ({' '.join(c.split('_')[1] for c in have)}) | " + " | ".join(row) + " |")
 
     # band widths: the last load step's increment (bands move: over several steps the

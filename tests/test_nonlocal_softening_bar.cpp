@@ -3,12 +3,14 @@
 // (Bazant & Pijaudier-Cabot 1988; Jirasek 1998), its points the element
 // centres of N equal elements (one point each), equilibrium being one stress
 // at every point. The material is a scalar damage law with linear softening
-// written here (onset strain eps0, zero stress at epsf = 10 eps0); the centre
-// is 2 % weaker (a Gaussian dip 0.01 L wide) so that the band has a place.
-// The real NonlocalMaterial gives every stress; the Jacobian of the Newton
-// iterations comes from the formulas (the weights from Wendland's formula,
-// not from the operator), so a wrapper that computed something else would
-// not converge. Load control: the averaged strain of the centre point.
+// written here (onset strain eps0, zero stress at epsf = 10 eps0); the onset
+// dips linearly to 0.9 eps0 at the centre over |x - L/2| < 0.1 L (the same
+// weak zone on every mesh) so that the band has a place. The real
+// NonlocalMaterial gives every stress; the Jacobian of the Newton iterations
+// comes from the formulas (the weights from Wendland's formula, not from the
+// operator), so a wrapper that computed something else would not converge.
+// Load control: the averaged strain of the centre point, in steps cut in
+// halves where the iterations stall.
 //
 // What it shows, per mesh (N = 21, 41, 81, 161 with R = 0.1 L, i.e. 2 to 16
 // spacings), at the step where the stress falls below half its peak:
@@ -21,7 +23,9 @@
 // - local elastic (C_e = the elastic modulus): u_s and the band width (the
 //   points whose strain increment from 0.7 to 0.5 of the peak exceeds half
 //   its largest value) are the same on every mesh that resolves R, to within
-//   one element of the coarsest, where the local ones shrink with h.
+//   one element of the coarsest, where the local ones shrink with h; and
+//   the band widens with C_e (about 1.1, 2.1 and 3.3 R for C_e = 0.3, 1 and 3
+//   times the elastic modulus).
 #include "check.h"
 #include "nonlocal/nonlocal_material.h"
 #include "nonlocal/nonlocal_operator.h"
@@ -320,6 +324,20 @@ int main()
   c.truth("local elastic: u_s and the band width converge (each refinement moves them less)",
           std::abs(elastic_us[3] - elastic_us[2]) < std::abs(elastic_us[2] - elastic_us[1]) &&
             std::abs(elastic_width[3] - elastic_width[2]) < std::abs(elastic_width[2] - elastic_width[1]));
+
+  // what C_e sets (N = 81): the band, and with it u_s, widens as C_e stiffens against the material
+  double narrower = 0.0;
+  for (const double ratio : {0.3, 1.0, 3.0})
+  {
+    const Result r = ratio == 1.0 ? nonlocal[2] : pull(81, R, {0.0, 0.5 * ratio * M});
+    const std::string at = " (C_e = " + std::to_string(ratio).substr(0, 3) + " M, N = 81)";
+    if (!c.truth("local elastic: pulled past half the peak" + at, r.converged, r.failure))
+      break;
+    std::cout << "  C_e = " << ratio << " M: band width " << r.band_width() / R << " R, u_s "
+              << r.softening_elongation() / (eps0 * L) << " eps0 L" << std::endl;
+    c.truth("local elastic: the band is wider than with a softer C_e" + at, r.band_width() > narrower);
+    narrower = r.band_width();
+  }
 
   // [LSYF]'s total strain, on the meshes where its inverse stays moderate (R up to 4 spacings)
   for (const unsigned int k : {0u, 1u})

@@ -24,8 +24,8 @@
 //   points whose strain increment from 0.7 to 0.5 of the peak exceeds half
 //   its largest value) are the same on every mesh that resolves R, to within
 //   one element of the coarsest, where the local ones shrink with h; and
-//   the band widens with C_e (about 1.1, 2.1 and 3.3 R for C_e = 0.3, 1 and 3
-//   times the elastic modulus).
+//   the band's width is set by C_e against the softening modulus H (about
+//   1.1, 1.4, 2.1 and 3.3 R for C_e / H = 2.7, 4, 9 and 27).
 #include "check.h"
 #include "nonlocal/nonlocal_material.h"
 #include "nonlocal/nonlocal_operator.h"
@@ -49,15 +49,17 @@ using fe2dem::macro::NonlocalOperator;
 namespace
 {
 constexpr int dim = 2;
-constexpr double L = 1.0, M = 1.0, eps0 = 1e-4, epsf = 10.0 * eps0, R = 0.1;
+constexpr double L = 1.0, M = 1.0, eps0 = 1e-4, R = 0.1;
 
 /// Scalar damage in uniaxial strain: sigma = (1 - omega(kappa)) M e, kappa the largest e so far,
-/// the envelope M e_k (epsf - e) / (epsf - e_k) beyond the point's onset strain e_k.
+/// the envelope M e_k (epsf - e) / (epsf - e_k) beyond the point's onset strain e_k (softening
+/// modulus H = M e_k / (epsf - e_k), M / 9 with epsf = 10 eps0).
 class SofteningBar : public fe2dem::macro::Material<dim>
 {
 public:
-  explicit SofteningBar(std::vector<double> onset)
-    : onset_(std::move(onset)), kappa_(onset_.size(), 0.0), kappa_trial_(kappa_)
+  explicit SofteningBar(std::vector<double> onset, double failure_strain = 10.0 * eps0)
+      : epsf(failure_strain), onset_(std::move(onset)), kappa_(onset_.size(), 0.0),
+        kappa_trial_(kappa_)
   {
   }
   fe2dem::macro::EvaluationCost evaluate(std::vector<IpState<dim>>& points) override
@@ -81,7 +83,8 @@ public:
    */
   double stiffness(std::size_t k, double e, bool secant_if_undamaged) const
   {
-    const bool loading = e > kappa_[k] && e > onset_[k] && !(secant_if_undamaged && kappa_[k] <= onset_[k]);
+    const bool loading =
+        e > kappa_[k] && e > onset_[k] && !(secant_if_undamaged && kappa_[k] <= onset_[k]);
     if (loading)
       return e < epsf ? -M * onset_[k] / (epsf - onset_[k]) : 0.0;
     return (1.0 - damage(k, std::max(kappa_[k], e))) * M;
@@ -102,6 +105,7 @@ private:
       return 0.0;
     return kappa >= epsf ? 1.0 : 1.0 - e * (epsf - kappa) / (kappa * (epsf - e));
   }
+  double epsf; ///< the strain at which the envelope reaches zero stress
   std::vector<double> onset_, kappa_, kappa_trial_;
 };
 
@@ -123,12 +127,14 @@ struct Result
   double band_width() const
   {
     const double half = 0.5 * *std::max_element(increment.begin(), increment.end());
-    return h * double(std::count_if(increment.begin(), increment.end(), [&](double d) { return d > half; }));
+    return h * double(std::count_if(increment.begin(), increment.end(),
+                                    [&](double d) { return d > half; }));
   }
 };
 
 /// Pulls the bar of N points past its peak, each step by the centre's averaged strain.
-Result pull(unsigned int N, double radius, LocalElasticity elastic)
+Result pull(unsigned int N, double radius, LocalElasticity elastic,
+            double failure_strain = 10.0 * eps0)
 {
   Result result;
   const double h = L / N;
@@ -139,19 +145,22 @@ Result pull(unsigned int N, double radius, LocalElasticity elastic)
   for (unsigned int i = 0; i < N; ++i)
   {
     positions[i] = Point<dim>((i + 0.5) * h, 0.0);
-    onset[i] = eps0 * (1.0 - 0.1 * std::max(0.0, 1.0 - std::abs(positions[i][0] - 0.5 * L) / (0.1 * L)));
+    onset[i] =
+        eps0 * (1.0 - 0.1 * std::max(0.0, 1.0 - std::abs(positions[i][0] - 0.5 * L) / (0.1 * L)));
   }
-  auto owned = std::make_unique<SofteningBar>(onset);
+  auto owned = std::make_unique<SofteningBar>(onset, failure_strain);
   SofteningBar& law = *owned;
-  NonlocalMaterial<dim> material(std::move(owned),
-                                 NonlocalOperator<dim>(positions, radius, NonlocalOperator<dim>::Weight::wendland),
-                                 1.0, elastic);
+  NonlocalMaterial<dim> material(
+      std::move(owned),
+      NonlocalOperator<dim>(positions, radius, NonlocalOperator<dim>::Weight::wendland), 1.0,
+      elastic);
   FullMatrix<double> A(N, N); // the row-normalised weights, from the formula
   for (unsigned int i = 0; i < N; ++i)
   {
     double total = 0.0;
     for (unsigned int j = 0; j < N; ++j)
-      total += (A(i, j) = i == j ? 1.0 : wendland(std::abs(positions[i][0] - positions[j][0]), radius));
+      total +=
+          (A(i, j) = i == j ? 1.0 : wendland(std::abs(positions[i][0] - positions[j][0]), radius));
     for (unsigned int j = 0; j < N; ++j)
       A(i, j) /= total;
   }
@@ -163,7 +172,8 @@ Result pull(unsigned int N, double radius, LocalElasticity elastic)
   Vector<double> strain(N), averaged(N), at_70(N), residual(N + 1);
   double s = 0.0;
   // the residual (stress minus s at every point, the control last) at the strains e, and its size
-  const auto evaluate = [&](const Vector<double>& e, double stress, double target) {
+  const auto evaluate = [&](const Vector<double>& e, double stress, double target)
+  {
     for (unsigned int i = 0; i < N; ++i)
     {
       points[i].F = unit_symmetric_tensor<dim>();
@@ -177,8 +187,10 @@ Result pull(unsigned int N, double radius, LocalElasticity elastic)
     residual[N] = averaged[centre] - target;
     return size;
   };
-  // Newton's iterations to the centre's averaged strain `target` from the last commit; false if they stall
-  const auto solve = [&](double target) {
+  // Newton's iterations to the centre's averaged strain `target` from the last commit; false if
+  // they stall
+  const auto solve = [&](double target)
+  {
     double size = evaluate(strain, s, target);
     for (unsigned int it = 0; it < 60; ++it)
     {
@@ -219,10 +231,10 @@ Result pull(unsigned int N, double radius, LocalElasticity elastic)
   double reached = 0.0; // the target of the last commit
   for (unsigned int step = 1; step <= 400; ++step)
   {
-    // steps of eps0 / 20, of eps0 / 400 from 0.85 to 1.0 eps0 (over the peak: finer than the onsets of
-    // the centre's neighbours differ on the finest mesh, so that no step predicts them past it); a
-    // step whose iterations stall is cut in halves
-    const double goal = step <= 17 ? step * eps0 / 20.0
+    // steps of eps0 / 20, of eps0 / 400 from 0.85 to 1.0 eps0 (over the peak: finer than the onsets
+    // of the centre's neighbours differ on the finest mesh, so that no step predicts them past it);
+    // a step whose iterations stall is cut in halves
+    const double goal = step <= 17   ? step * eps0 / 20.0
                         : step <= 77 ? 0.85 * eps0 + (step - 17) * eps0 / 400.0
                                      : eps0 + (step - 77) * eps0 / 20.0;
     for (unsigned int cuts = 0; reached < goal;)
@@ -287,22 +299,27 @@ int main()
     local.push_back(pull(N, 0.0, {}));
     nonlocal.push_back(pull(N, R, elastic));
     const std::string at = " (N = " + std::to_string(N) + ")";
-    if (!c.truth("local: pulled past half the peak" + at, local.back().converged, local.back().failure) ||
-        !c.truth("local elastic: pulled past half the peak" + at, nonlocal.back().converged, nonlocal.back().failure))
+    if (!c.truth("local: pulled past half the peak" + at, local.back().converged,
+                 local.back().failure) ||
+        !c.truth("local elastic: pulled past half the peak" + at, nonlocal.back().converged,
+                 nonlocal.back().failure))
       return c.summary();
-    // the closed form of the local bar: the centre (onset 0.9 eps0) on its envelope, the rest elastic at s
+    // the closed form of the local bar: the centre (onset 0.9 eps0) on its envelope, the rest
+    // elastic at s
     const Result& l = local.back();
     const double closed = l.h * (SofteningBar({0.9 * eps0}).envelope_strain(0, l.s) - l.s / M);
     c.less("local: u_s is the closed form of a band one element wide" + at,
            std::abs(l.softening_elongation() / closed - 1.0), 1e-6);
     c.less("local: the band is one element wide" + at, std::abs(l.band_width() / l.h - 1.0), 1e-12);
-    std::cout << "  N = " << N << " (R = " << R * N / L << " spacings): peak " << l.peak / (M * eps0) << " / "
-              << nonlocal.back().peak / (M * eps0) << " M eps0, u_s " << l.softening_elongation() / (eps0 * L)
-              << " / " << nonlocal.back().softening_elongation() / (eps0 * L) << " eps0 L, band width "
-              << l.band_width() / L << " / " << nonlocal.back().band_width() / L << " L (local / local elastic)"
-              << std::endl;
+    std::cout << "  N = " << N << " (R = " << R * N / L << " spacings): peak "
+              << l.peak / (M * eps0) << " / " << nonlocal.back().peak / (M * eps0)
+              << " M eps0, u_s " << l.softening_elongation() / (eps0 * L) << " / "
+              << nonlocal.back().softening_elongation() / (eps0 * L) << " eps0 L, band width "
+              << l.band_width() / L << " / " << nonlocal.back().band_width() / L
+              << " L (local / local elastic)" << std::endl;
   }
-  const auto values = [](const std::vector<Result>& runs, double (Result::*f)() const) {
+  const auto values = [](const std::vector<Result>& runs, double (Result::*f)() const)
+  {
     std::vector<double> v;
     for (const Result& r : runs)
       v.push_back((r.*f)());
@@ -316,27 +333,43 @@ int main()
   // the two criteria, here on a bar: the nonlocal spread at most half the local one, and
   // the band width constant within one element of the coarsest mesh where the local one is h
   c.less("local elastic: u_s the same on every mesh (spread)", spread(elastic_us), 0.05);
-  c.less("local elastic: its spread below half the local one", spread(elastic_us) / spread(local_us), 0.5);
+  c.less("local elastic: its spread below half the local one",
+         spread(elastic_us) / spread(local_us), 0.5);
   c.less("local: u_s shrinks with h (N = 161 against 21)", local_us.back() / local_us.front(), 0.2);
   const auto [narrow, wide] = std::minmax_element(elastic_width.begin(), elastic_width.end());
   c.less("local elastic: the band width within one element of the coarsest mesh", *wide - *narrow,
          nonlocal.front().h);
   c.truth("local elastic: u_s and the band width converge (each refinement moves them less)",
           std::abs(elastic_us[3] - elastic_us[2]) < std::abs(elastic_us[2] - elastic_us[1]) &&
-            std::abs(elastic_width[3] - elastic_width[2]) < std::abs(elastic_width[2] - elastic_width[1]));
+              std::abs(elastic_width[3] - elastic_width[2]) <
+                  std::abs(elastic_width[2] - elastic_width[1]));
 
-  // what C_e sets (N = 81): the band, and with it u_s, widens as C_e stiffens against the material
-  double narrower = 0.0;
-  for (const double ratio : {0.3, 1.0, 3.0})
+  // what sets the band (N = 81): C_e against the softening modulus H. With H = M / 9 and C_e = 0.3,
+  // 1 and 3 M (C_e / H = 2.7, 9, 27) it widens; with H = M / 4 and C_e = M (C_e / H = 4) it falls
+  // between the first two, though C_e is that of the second
+  std::vector<double> width;
+  for (const auto& [ratio, failure] :
+       std::vector<std::pair<double, double>>{{0.3, 10.0}, {1.0, 10.0}, {3.0, 10.0}, {1.0, 5.0}})
   {
-    const Result r = ratio == 1.0 ? nonlocal[2] : pull(81, R, {0.0, 0.5 * ratio * M});
-    const std::string at = " (C_e = " + std::to_string(ratio).substr(0, 3) + " M, N = 81)";
+    const Result r = ratio == 1.0 && failure == 10.0
+                         ? nonlocal[2]
+                         : pull(81, R, {0.0, 0.5 * ratio * M}, failure * eps0);
+    const double H = M / (failure - 1.0);
+    const std::string at =
+        " (C_e / H = " + std::to_string(ratio * M / H).substr(0, 3) + ", N = 81)";
     if (!c.truth("local elastic: pulled past half the peak" + at, r.converged, r.failure))
       break;
-    std::cout << "  C_e = " << ratio << " M: band width " << r.band_width() / R << " R, u_s "
-              << r.softening_elongation() / (eps0 * L) << " eps0 L" << std::endl;
-    c.truth("local elastic: the band is wider than with a softer C_e" + at, r.band_width() > narrower);
-    narrower = r.band_width();
+    width.push_back(r.band_width());
+    std::cout << "  C_e = " << ratio << " M, H = M / " << failure - 1.0 << ": band width "
+              << r.band_width() / R << " R, u_s " << r.softening_elongation() / (eps0 * L)
+              << " eps0 L" << std::endl;
+  }
+  if (width.size() == 4)
+  {
+    c.truth("local elastic: a stiffer C_e widens the band (C_e / H = 2.7, 9, 27)",
+            width[0] < width[1] && width[1] < width[2]);
+    c.truth("local elastic: C_e / H, not C_e alone, sets the width (C_e / H = 4 between 2.7 and 9)",
+            width[0] < width[3] && width[3] < width[1]);
   }
 
   // [LSYF]'s total strain, on the meshes where its inverse stays moderate (R up to 4 spacings)
@@ -347,8 +380,9 @@ int main()
     const std::string at = " (N = " + std::to_string(N) + ")";
     if (!c.truth("total strain: pulled past half the peak" + at, total.converged, total.failure))
       continue;
-    // both runs take the same steps of the centre's averaged strain and solve the same pointwise law
-    // in it (sigma(Fbar_i) = s), so the averaged field is the local one: it localises in one point
+    // both runs take the same steps of the centre's averaged strain and solve the same pointwise
+    // law in it (sigma(Fbar_i) = s), so the averaged field is the local one: it localises in one
+    // point
     double worst = 0.0, size = 0.0;
     for (unsigned int i = 0; i < N; ++i)
       worst = std::max(worst, std::abs(total.averaged[i] - local[k].strain[i])),
@@ -356,10 +390,12 @@ int main()
     c.less("total strain: the averaged strains are the local bar's" + at, worst / size, 1e-6);
     c.less("total strain: u_s is the local one (no limiter)" + at,
            std::abs(total.softening_elongation() / local[k].softening_elongation() - 1.0), 0.01);
-    std::cout << "  total strain, N = " << N << ": u_s " << total.softening_elongation() / (eps0 * L)
-              << " eps0 L (local " << local[k].softening_elongation() / (eps0 * L) << "), own strains from "
+    std::cout << "  total strain, N = " << N << ": u_s "
+              << total.softening_elongation() / (eps0 * L) << " eps0 L (local "
+              << local[k].softening_elongation() / (eps0 * L) << "), own strains from "
               << *std::min_element(total.strain.begin(), total.strain.end()) / eps0 << " to "
-              << *std::max_element(total.strain.begin(), total.strain.end()) / eps0 << " eps0" << std::endl;
+              << *std::max_element(total.strain.begin(), total.strain.end()) / eps0 << " eps0"
+              << std::endl;
   }
   return c.summary();
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """[LSYF] problem 4 (issue 37): plane-strain biaxial compression, local
-against nonlocal on three meshes. Reads RESULTS/problem4_{local,R11.8}_MESH/, the local
-elastic runs problem4_R*_le*/ and problem4_2x4_rate{4,1}/ (run.sh problem4), prints the tables of the
+against nonlocal on three meshes each (FAMILIES; the spreads tabled: SPREADS). Reads
+RESULTS/problem4_{local,R11.8,R11.8_le5}_MESH/, the single local elastic runs
+problem4_R*_le50_*/ and problem4_2x4_rate{4,1}/ (run.sh problem4), prints the tables of the
 README and writes into RESULTS:
   problem4_curves.png   stress ratio against axial strain, every case
   problem4_bands.png    the in-plane shear strain increment from 5 to 6 %
@@ -36,12 +37,17 @@ import numpy as np  # noqa: E402
 from band_tools import inplane_band, plot_curves  # noqa: E402
 
 WIDTH, DEPTH, P_CONFINING = 0.04, 0.005, 4.16e5
-MESHES = ["4x8", "6x12", "8x16"]
-FAMILIES = {"local": "problem4_local_{}", "nonlocal R = 11.8 mm": "problem4_R11.8_{}"}
-# single runs of the local elastic formulation (C_e's E in MPa)
+# families: case-name pattern and meshes; C_e's E in MPa for the local elastic formulation
+FAMILIES = {"local": ("problem4_local_{}", ["4x8", "6x12", "8x16", "10x20"]),
+            "nonlocal R = 11.8 mm": ("problem4_R11.8_{}", ["4x8", "6x12", "8x16"]),
+            "local elastic 5 MPa, R = 11.8 mm": ("problem4_R11.8_le5_{}", ["6x12", "8x16", "10x20"])}
+# the mesh spreads tabled: [LSYF]'s three meshes, and the three whose IPs R = 11.8 mm reaches
+SPREADS = [("local", ["4x8", "6x12", "8x16"]), ("nonlocal R = 11.8 mm", ["4x8", "6x12", "8x16"]),
+           ("local", ["6x12", "8x16", "10x20"]), ("nonlocal R = 11.8 mm", ["6x12", "8x16"]),
+           ("local elastic 5 MPa, R = 11.8 mm", ["6x12", "8x16", "10x20"])]
+# single runs of the local elastic formulation
 LOCAL_ELASTIC = {"local elastic 50 MPa, R = 11.8 mm 8x16": "problem4_R11.8_le50_8x16",
-                 "local elastic 50 MPa, R = 20 mm 4x8": "problem4_R20_le50_4x8",
-                 "local elastic 5 MPa, R = 11.8 mm 8x16": "problem4_R11.8_le5_8x16"}
+                 "local elastic 50 MPa, R = 20 mm 4x8": "problem4_R20_le50_4x8"}
 BAND_ROWS = 4  # the band of the last BAND_ROWS rows' increment (1 % of axial strain)
 
 
@@ -84,7 +90,8 @@ def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
     results = sys.argv[1]
-    cases = {f"{fam} {m}": os.path.join(results, pat.format(m)) for fam, pat in FAMILIES.items() for m in MESHES}
+    cases = {f"{fam} {m}": os.path.join(results, pat.format(m)) for fam, (pat, meshes) in FAMILIES.items()
+             for m in meshes}
     cases.update({f"local 2x4, {r} /s": os.path.join(results, f"problem4_2x4_rate{r}") for r in (4, 1)})
     cases.update({k: os.path.join(results, c) for k, c in LOCAL_ELASTIC.items()})
     # finished runs, and runs that stopped (an RVE failed) with the rows they converged
@@ -112,8 +119,8 @@ def main():
     print("\n## spread over the meshes from the peak of the family's mean: (max - min) / mean of the ratio")
     print("| family | meshes | largest | mean | at the end |")
     print("|---|---|---|---|---|")
-    for fam in FAMILIES:
-        have = [f"{fam} {m}" for m in MESHES if f"{fam} {m}" in curves]
+    for fam, meshes in SPREADS:
+        have = [f"{fam} {m}" for m in meshes if f"{fam} {m}" in curves]
         if len(have) < 2:
             continue
         s = spread(curves, have)

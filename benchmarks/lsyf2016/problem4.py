@@ -39,11 +39,11 @@ from band_tools import inplane_band, plot_curves  # noqa: E402
 WIDTH, DEPTH, P_CONFINING = 0.04, 0.005, 4.16e5
 # families: case-name pattern and meshes; C_e's E in MPa for the local elastic formulation
 FAMILIES = {"local": ("problem4_local_{}", ["4x8", "6x12", "8x16", "10x20"]),
-            "nonlocal R = 11.8 mm": ("problem4_R11.8_{}", ["4x8", "6x12", "8x16"]),
+            "nonlocal R = 11.8 mm": ("problem4_R11.8_{}", ["4x8", "6x12", "8x16", "10x20"]),
             "local elastic 5 MPa, R = 11.8 mm": ("problem4_R11.8_le5_{}", ["6x12", "8x16", "10x20"])}
 # the mesh spreads tabled: [LSYF]'s three meshes, and the three whose IPs R = 11.8 mm reaches
 SPREADS = [("local", ["4x8", "6x12", "8x16"]), ("nonlocal R = 11.8 mm", ["4x8", "6x12", "8x16"]),
-           ("local", ["6x12", "8x16", "10x20"]), ("nonlocal R = 11.8 mm", ["6x12", "8x16"]),
+           ("local", ["6x12", "8x16", "10x20"]), ("nonlocal R = 11.8 mm", ["6x12", "8x16", "10x20"]),
            ("local elastic 5 MPa, R = 11.8 mm", ["6x12", "8x16", "10x20"])]
 # single runs of the local elastic formulation
 LOCAL_ELASTIC = {"local elastic 50 MPa, R = 11.8 mm 8x16": "problem4_R11.8_le50_8x16",

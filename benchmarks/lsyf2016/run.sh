@@ -254,12 +254,12 @@ mkdir -p "$results"
 # Problem 4's cases: NAME CELLS_X CELLS_Y RADIUS (the same here and with --full)
 problem4_cases=("problem4_local_4x8 4 8 0" "problem4_R11.8_4x8 4 8 0.0118" "problem4_local_6x12 6 12 0"
                 "problem4_R11.8_6x12 6 12 0.0118" "problem4_local_8x16 8 16 0" "problem4_R11.8_8x16 8 16 0.0118"
-                "problem4_local_10x20 10 20 0")
+                "problem4_local_10x20 10 20 0" "problem4_R11.8_10x20 10 20 0.0118")
 # ... and in the local elastic formulation (user guide, 'Nonlocal operator'), NAME CELLS_X CELLS_Y
 # RADIUS E: with C_e's E = 50 MPa at [LSYF]'s radius on 8x16 and with R = 20 mm on 4x8 both rose
 # far above the RVE's strength (README, 'Problem 4'), so the other meshes were not run; E = 5 MPa
 # is the tenth, run on the three meshes whose IPs R reaches (6x12, 8x16, 10x20; on 4x8 the
-# neighbours weigh 0.002), with the local 10x20 beside it (session 30)
+# neighbours weigh 0.002), with the local and total-strain 10x20 beside it (session 30)
 problem4_le_cases=("problem4_R11.8_le50_8x16 8 16 0.0118 5e7" "problem4_R20_le50_4x8 4 8 0.02 5e7"
                    "problem4_R11.8_le5_8x16 8 16 0.0118 5e6" "problem4_R11.8_le5_6x12 6 12 0.0118 5e6"
                    "problem4_R11.8_le5_10x20 10 20 0.0118 5e6")

@@ -86,6 +86,31 @@ def spread(curves, cases):
     return [(eps[k], (r[:, k].max() - r[:, k].min()) / r[:, k].mean()) for k in range(peak, n)]
 
 
+def local_elastic_law(case_dir):
+    """(lambda, mu) of C_e from the run's macro.prm, None for the total-strain or local runs."""
+    entries = dict(line.strip()[4:].split(" = ", 1) for line in open(os.path.join(case_dir, "macro.prm"))
+                   if line.strip().startswith("set ") and " = " in line)
+    if entries.get("Formulation") != "local elastic":
+        return None
+    E, nu = float(entries["Local elastic modulus"]), float(entries["Local Poisson ratio"])
+    return E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
+
+
+def stress_parts(case_dir, row):
+    """IP means at `row` (0-based) of |yy of F (C_e : (E - Ebar))| (0 without C_e), |P_yy|, the RVEs'
+    -sigma_11 and det F - 1."""
+    with h5py.File(os.path.join(case_dir, "out", "history.h5"), "r") as h:
+        F = h["F"][row].reshape(-1, 3, 3)
+        F_bar = h["F_nonlocal"][row].reshape(-1, 3, 3) if "F_nonlocal" in h else F
+        P, sigma = h["P"][row].reshape(-1, 3, 3), h["sigma"][row].reshape(-1, 3, 3)
+    law, term = local_elastic_law(case_dir), np.zeros(len(F))
+    if law is not None:
+        dE = 0.5 * (np.einsum("nji,njk->nik", F, F) - np.einsum("nji,njk->nik", F_bar, F_bar))
+        S = 2 * law[1] * dE + law[0] * np.trace(dE, axis1=1, axis2=2)[:, None, None] * np.eye(3)
+        term = np.abs(np.einsum("nij,njk->nik", F, S)[:, 1, 1])
+    return term.mean(), np.abs(P[:, 1, 1]).mean(), -sigma[:, 0, 0].mean(), (np.linalg.det(F) - 1).mean()
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
@@ -132,6 +157,17 @@ def main():
         late = e >= 0.02
         print(f"\nrate (local 2x4): from 2 % the ratio at 4 /s is {r4[late].min():.3f}-{r4[late].max():.3f} "
               f"(mean {r4[late].mean():.3f}), at 1 /s {r1[late].min():.3f}-{r1[late].max():.3f} (mean {r1[late].mean():.3f})")
+    print("\n## what carries the load: IP means of the local elastic term and of the RVEs' stress (kPa)")
+    print("| case | axial strain | C_e : (E - Ebar), yy | P_yy | RVEs' sigma_11 | det F - 1 |")
+    print("|---|---|---|---|---|---|")
+    for k in ["local 8x16", "nonlocal R = 11.8 mm 8x16", "local elastic 5 MPa, R = 11.8 mm 8x16",
+              "local elastic 50 MPa, R = 11.8 mm 8x16"]:
+        if k not in done:
+            continue
+        for row in (3, 11, 23):
+            term, P_yy, s11, dJ = stress_parts(done[k], row)
+            print(f"| {k} | {100 * curves[k][0][row + 1]:.0f} % | {term / 1e3:.0f} | {P_yy / 1e3:.0f} | "
+                  f"{s11 / 1e3:.0f} | {dJ:.4f} |")
     print(f"\n## band width (band_width.py, increment over the last {BAND_ROWS} rows)")
     print("| case | band width (mm) | band angle (deg from x) | gamma max |")
     print("|---|---|---|---|")

@@ -77,13 +77,27 @@ def cost(case_dir):
     return wall, n_rve, sum(int(r["rve_solves"]) for r in rows), sum(int(r["dem_steps"]) for r in rows)
 
 
-def spread(curves, cases):
-    """[(strain, (max - min)/mean)] from the peak of the mean ratio of `cases` to the end."""
+def spread(curves, cases, start=None):
+    """[(strain, (max - min)/mean)] of the ratio of `cases`, from the peak of their mean (or the
+    first row at axial strain `start`) to the end."""
     n = min(len(curves[c][2]) for c in cases)
     r = np.array([curves[c][2][:n] for c in cases])
-    peak = int(np.argmax(r.mean(axis=0)))
     eps = curves[cases[0]][0]
-    return [(eps[k], (r[:, k].max() - r[:, k].min()) / r[:, k].mean()) for k in range(peak, n)]
+    first = int(np.argmax(r.mean(axis=0))) if start is None else int(np.argmax(eps >= start - 1e-9))
+    return [(eps[k], (r[:, k].max() - r[:, k].min()) / r[:, k].mean()) for k in range(first, n)]
+
+
+def ratio_table(curves, names, every):
+    """Markdown rows of the ratio of `names` at every `every`-th row (the run's peak in bold)."""
+    print("| axial strain | " + " | ".join(names) + " |")
+    print("|---" * (len(names) + 1) + "|")
+    n = max(len(curves[c][0]) for c in names)
+    for k in range(every, n, every):
+        cells = []
+        for c in names:
+            e, _, r = curves[c]
+            cells.append("-" if k >= len(r) else (f"**{r[k]:.3f}**" if k == int(np.argmax(r)) else f"{r[k]:.3f}"))
+        print(f"| {100 * curves[names[0]][0][min(k, len(curves[names[0]][0]) - 1)]:.2f} % | " + " | ".join(cells) + " |")
 
 
 def local_elastic_law(case_dir):
@@ -130,27 +144,22 @@ def main():
             w.writerows([k, f"{a:.5f}", f"{b:.1f}", f"{c:.5f}"] for a, b, c in zip(e, s, r))
 
     print("## stress ratio of the platens, every 0.25 % (peak in bold)")
-    names = list(curves)
-    print("| axial strain | " + " | ".join(names) + " |")
-    print("|---" * (len(names) + 1) + "|")
-    n = max(len(c[0]) for c in curves.values())
-    for k in range(1, n):
-        cells = []
-        for c in names:
-            e, _, r = curves[c]
-            cells.append("-" if k >= len(r) else (f"**{r[k]:.3f}**" if k == int(np.argmax(r)) else f"{r[k]:.3f}"))
-        print(f"| {100 * curves[names[0]][0][min(k, len(curves[names[0]][0]) - 1)]:.2f} % | " + " | ".join(cells) + " |")
+    ratio_table(curves, list(curves), 1)
+    print("\n## the mesh families, every 0.5 %")
+    ratio_table(curves, [f"{fam} {m}" for fam, (_, meshes) in FAMILIES.items() for m in meshes
+                         if f"{fam} {m}" in curves], 2)
 
     print("\n## spread over the meshes from the peak of the family's mean: (max - min) / mean of the ratio")
-    print("| family | meshes | largest | mean | at the end |")
-    print("|---|---|---|---|---|")
+    print("| family | meshes | peak of the mean at | largest | mean | at the end | largest from 1 % |")
+    print("|---|---|---|---|---|---|---|")
     for fam, meshes in SPREADS:
         have = [f"{fam} {m}" for m in meshes if f"{fam} {m}" in curves]
         if len(have) < 2:
             continue
-        s = spread(curves, have)
-        print(f"| {fam} | {', '.join(h.split()[-1] for h in have)} | {100 * max(v for _, v in s):.1f} % | "
-              f"{100 * np.mean([v for _, v in s]):.1f} % | {100 * s[-1][1]:.1f} % |")
+        s, s1 = spread(curves, have), spread(curves, have, 0.01)
+        print(f"| {fam} | {', '.join(h.split()[-1] for h in have)} | {100 * s[0][0]:.2f} % | "
+              f"{100 * max(v for _, v in s):.1f} % | {100 * np.mean([v for _, v in s]):.1f} % | "
+              f"{100 * s[-1][1]:.1f} % | {100 * max(v for _, v in s1):.1f} % |")
     if {"local 2x4, 4 /s", "local 2x4, 1 /s"} <= set(curves):
         e, r4 = curves["local 2x4, 4 /s"][0], curves["local 2x4, 4 /s"][2]
         r1 = curves["local 2x4, 1 /s"][2]

@@ -15,9 +15,11 @@ void Nonlocal::declare_parameters(dealii::ParameterHandler& prm)
                     "IP's material (RVE) is the average of the increments of the IPs within R "
                     "of it in the reference configuration, with the weight of 'Weight' "
                     "normalised over them. 0: local (each IP its own increment, bit for bit the "
-                    "run without this subsection). A band cannot become narrower than about 2R "
-                    "([LSYF]: 2R = 13.5 mm, about their RVE's side); a radius that reaches no "
-                    "other IP leaves the run local (with a warning).");
+                    "run without this subsection). With 'Formulation = local elastic' a band is "
+                    "about 1 to 3 R wide, wider the stiffer C_e is against the material's "
+                    "softening (user guide); with total strain R sets no band width. [LSYF]: "
+                    "2R = 13.5 mm, about their RVE's side. A radius that reaches no other IP "
+                    "leaves the run local (with a warning).");
   prm.declare_entry("Weight", "wendland", Selection("wendland|bell"),
                     "The weight a(r) of support R, normalised over the IPs within R. wendland: "
                     "(1 - r/R)^4 (4 r/R + 1), Wendland's C2 function, positive definite: no strain "

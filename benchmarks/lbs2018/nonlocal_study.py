@@ -44,7 +44,10 @@ FAMILIES = {"local": ("mesh_{}", "local"),                      # case pattern, 
             "local elastic R = 5 mm, one point": ("nonlocal_{}_op_R5_le", "LE 5 1pt"),
             "local elastic R = 2.5 mm, C_e / 2": ("nonlocal_{}_le3e6", "LE 2.5 C/2"),
             "local, 0.25 % steps": ("mesh_{}_half", "local 0.25"),
-            "local elastic R = 2.5 mm, 0.25 % steps": ("nonlocal_{}_le_half", "LE 2.5 0.25")}
+            "local elastic R = 2.5 mm, 0.25 % steps": ("nonlocal_{}_le_half", "LE 2.5 0.25"),
+            "local, 0.125 % steps": ("mesh_{}_quarter", "local 0.125"),
+            "local elastic R = 2.5 mm, 0.125 % steps": ("nonlocal_{}_le_quarter", "LE 2.5 0.125")}
+STEP_SUFFIXES = {"": "0.5 %", "_half": "0.25 %", "_quarter": "0.125 %"}  # stage 2's load step
 
 
 def relative_spread(r, axis=None):
@@ -85,7 +88,8 @@ def main():
 
     fig, axs = plt.subplots(1, 2, figsize=(12, 4.5), sharey=True)
     local_elastic = [f.startswith("local elastic") for f in families]
-    styles = ("--", "-", ":", "-.", (0, (1, 3)), "-", ":", (0, (1, 3)), "-.", (0, (5, 1)), (0, (5, 1)))
+    styles = ("--", "-", ":", "-.", (0, (1, 3)), "-", ":", (0, (1, 3)), "-.", (0, (5, 1)), (0, (5, 1)),
+              (0, (3, 1, 1, 1)), (0, (3, 1, 1, 1)))
     for fam, style, le in zip(families, styles, local_elastic):
         ax = axs[1] if le else axs[0]
         if fam == "local":  # the reference in both panels
@@ -142,22 +146,24 @@ def main():
             row.append(f"{100 * relative_spread(r):.1f} %" if len(r) == len(have) else "-")
         print(f"| {fam} ({' '.join(c.split('_')[1] for c in have)}) | " + " | ".join(row) + " |")
 
-    # the load step: each run at 0.25 % steps against the same run at 0.5 % steps, at the 0.5 % rows
-    print("\n| case | 0.5 % steps against 0.25 % from 5 %: largest difference | at | mean |\n| --- | --- | --- | --- |")
-    for half_fam in ("local, 0.25 % steps", "local elastic R = 2.5 mm, 0.25 % steps"):
+    # the load step: each run at a finer step against the same run at the next coarser one, at the
+    # coarser one's rows from 5 %
+    print("\n| case | steps | against | largest difference from 5 % | at | mean |\n| --- | --- | --- | --- | --- | --- |")
+    suffixes = list(STEP_SUFFIXES)
+    for base in ("mesh_{}", "nonlocal_{}_le"):
         for m in MESHES:
-            half = FAMILIES[half_fam][0].format(m)
-            full = half[: -len("_half")]
-            if not (curves.get(half) and curves.get(full)):
-                continue
-            diffs = []
-            for e, r in zip(curves[full]["axial_strain"], curves[full]["stress_ratio"]):
-                k = int(np.argmin(np.abs(np.array(curves[half]["axial_strain"]) - e)))
-                if e >= 0.05 - 1e-9 and abs(curves[half]["axial_strain"][k] - e) < 1e-4:
-                    diffs.append((abs(curves[half]["stress_ratio"][k] - r) / r, e))
-            worst = max(diffs)
-            print(f"| {full} | {100 * worst[0]:.1f} % | {100 * worst[1]:.1f} % | "
-                  f"{100 * np.mean([d for d, _ in diffs]):.1f} % |")
+            for coarse, fine in zip(suffixes, suffixes[1:]):
+                a, b = base.format(m) + coarse, base.format(m) + fine
+                if not (curves.get(a) and curves.get(b)):
+                    continue
+                diffs = []
+                for e, r in zip(curves[a]["axial_strain"], curves[a]["stress_ratio"]):
+                    k = int(np.argmin(np.abs(np.array(curves[b]["axial_strain"]) - e)))
+                    if e >= 0.05 - 1e-9 and abs(curves[b]["axial_strain"][k] - e) < 1e-4:
+                        diffs.append((abs(curves[b]["stress_ratio"][k] - r) / r, e))
+                worst = max(diffs)
+                print(f"| {base.format(m)} | {STEP_SUFFIXES[fine]} | {STEP_SUFFIXES[coarse]} | {100 * worst[0]:.1f} % "
+                      f"| {100 * worst[1]:.1f} % | {100 * np.mean([d for d, _ in diffs]):.1f} % |")
 
     # band widths: the last load step's increment (bands move: over several steps the
     # increments of different bands add up), of F and, with the operator, of the F the RVEs saw

@@ -10,12 +10,12 @@
 #   nonlocal_1x1 ... nonlocal_4x8,        the meshes with the nonlocal operator,
 #   nonlocal_8x16                         R = 2.5 mm (README, "Local against
 #                                         nonlocal"; 8x16 not in 'all')
-#   nonlocal_MESH[_op][_RN][_aA][_le[E]][_half]  R = N mm (and Staggering = A), e.g.
+#   nonlocal_MESH[_op][_RN][_aA][_le[E]][_half|_quarter]  R = N mm (Staggering = A), e.g.
 #                                         nonlocal_4x8_R5; _op (also mesh_MESH_op):
 #                                         one point per element; _le: Formulation =
 #                                         local elastic, C_e of E = 6e6 N/m, or E;
-#                                         _half (also mesh_MESH_half): stage 2 in
-#                                         0.25 % steps (not in 'all'; README,
+#                                         _half, _quarter (also mesh_MESH_half...):
+#                                         stage 2 in 0.25 / 0.125 % steps (not in 'all'; README,
 #                                         "Local against nonlocal")
 #   mesh_4x8_steps22                      4x8 with stage 2 in 0.25 % steps to
 #                                         5.5 % (load-step check of the peak)
@@ -56,8 +56,8 @@ while [[ $# -gt 0 ]]; do
     --mts20) mts20=1; shift ;;
     all) cases+=("${all_cases[@]}"); shift ;;
     -h|--help) usage ;;
-    *) [[ " ${all_cases[*]} " == *" $1 "* || $1 =~ ^(mesh|nonlocal)_(1x1|1x2|2x4|4x8|8x16)(_op)?(_R[0-9.]+)?(_a[0-9.]+)?(_le[0-9.e]*)?(_half)?$ ]] ||
-         { echo "run.sh: unknown case '$1' (cases: ${all_cases[*]}, mesh_MESH[_op], nonlocal_MESH[_op][_RN][_aA][_le[E]][_half], all)" >&2; exit 2; }
+    *) [[ " ${all_cases[*]} " == *" $1 "* || $1 =~ ^(mesh|nonlocal)_(1x1|1x2|2x4|4x8|8x16)(_op)?(_R[0-9.]+)?(_a[0-9.]+)?(_le[0-9.e]*)?(_half|_quarter)?$ ]] ||
+         { echo "run.sh: unknown case '$1' (cases: ${all_cases[*]}, mesh_MESH[_op], nonlocal_MESH[_op][_RN][_aA][_le[E]][_half|_quarter], all)" >&2; exit 2; }
        cases+=("$1"); shift ;;
   esac
 done
@@ -79,8 +79,9 @@ overrides() {
       cells=${1#*_}; cells=${cells%%_*}
       printf 'subsection Geometry\n  set Cells x = %s\n  set Cells y = %s\nend\n' "${cells%x*}" "${cells#*x}"
       [[ $1 != *_steps22 ]] || printf 'subsection Loading\n  set Load steps = 22\n  set Axial strain = 0.055\nend\n'
-      # _half: stage 2 in 0.25 % steps (the load-step check of a whole curve)
-      [[ $1 != *_half ]] || printf 'subsection Loading\n  set Load steps = 40\nend\n' ;;
+      # _half, _quarter: stage 2 in 0.25 % and 0.125 % steps (the load-step check of a whole curve)
+      [[ $1 != *_half ]] || printf 'subsection Loading\n  set Load steps = 40\nend\n'
+      [[ $1 != *_quarter ]] || printf 'subsection Loading\n  set Load steps = 80\nend\n' ;;
     mu*) printf 'subsection RVE\n  set Friction = %s\nend\n' "${1#mu}" ;;
     locked) printf 'subsection RVE\n  set Rotation = locked\nend\n' ;;
     a005|a008) printf 'subsection RVE\n  set Packing = ../../rve_templates/packings/lbs_%s\nend\n' "$1" ;;

@@ -132,91 +132,142 @@ struct Result
   }
 };
 
-/// Pulls the bar of N points past its peak, each step by the centre's averaged strain.
-Result pull(unsigned int N, double radius, LocalElasticity elastic,
-            double failure_strain = 10.0 * eps0)
+/// A bar of N points around the real wrapper, in equilibrium at one stress s.
+class Bar
 {
-  Result result;
-  const double h = L / N;
-  result.h = h;
-  const unsigned int centre = N / 2;
-  std::vector<Point<dim>> positions(N);
-  std::vector<double> onset(N);
-  for (unsigned int i = 0; i < N; ++i)
+public:
+  Bar(unsigned int N, double radius, LocalElasticity elastic, double failure_strain)
+      : N_(N), h_(L / N), centre_(N / 2), A_(N, N), C_(elastic.lambda + 2.0 * elastic.mu),
+        points_(N), strain_(N), averaged_(N), residual_(N + 1)
   {
-    positions[i] = Point<dim>((i + 0.5) * h, 0.0);
-    onset[i] =
-        eps0 * (1.0 - 0.1 * std::max(0.0, 1.0 - std::abs(positions[i][0] - 0.5 * L) / (0.1 * L)));
-  }
-  auto owned = std::make_unique<SofteningBar>(onset, failure_strain);
-  SofteningBar& law = *owned;
-  NonlocalMaterial<dim> material(
-      std::move(owned),
-      NonlocalOperator<dim>(positions, radius, NonlocalOperator<dim>::Weight::wendland), 1.0,
-      elastic);
-  FullMatrix<double> A(N, N); // the row-normalised weights, from the formula
-  for (unsigned int i = 0; i < N; ++i)
-  {
-    double total = 0.0;
-    for (unsigned int j = 0; j < N; ++j)
-      total +=
-          (A(i, j) = i == j ? 1.0 : wendland(std::abs(positions[i][0] - positions[j][0]), radius));
-    for (unsigned int j = 0; j < N; ++j)
-      A(i, j) /= total;
-  }
-  const double C = elastic.lambda + 2.0 * elastic.mu; // C_e in uniaxial strain
-
-  std::vector<IpState<dim>> points(N);
-  for (unsigned int i = 0; i < N; ++i)
-    points[i].position = positions[i];
-  Vector<double> strain(N), averaged(N), at_70(N), residual(N + 1);
-  double s = 0.0;
-  // the residual (stress minus s at every point, the control last) at the strains e, and its size
-  const auto evaluate = [&](const Vector<double>& e, double stress, double target)
-  {
+    std::vector<Point<dim>> positions(N);
+    std::vector<double> onset(N);
     for (unsigned int i = 0; i < N; ++i)
     {
-      points[i].F = unit_symmetric_tensor<dim>();
-      points[i].F[0][0] += e[i];
+      points_[i].position = positions[i] = Point<dim>((i + 0.5) * h_, 0.0);
+      const double dip = std::max(0.0, 1.0 - std::abs(positions[i][0] - 0.5 * L) / (0.1 * L));
+      onset[i] = eps0 * (1.0 - 0.1 * dip);
     }
-    material.evaluate(points);
-    A.vmult(averaged, e);
-    double size = std::abs(averaged[centre] - target) / eps0;
-    for (unsigned int i = 0; i < N; ++i)
-      size = std::max(size, std::abs(residual[i] = points[i].P[0][0] - stress) / (M * eps0));
-    residual[N] = averaged[centre] - target;
-    return size;
-  };
-  // Newton's iterations to the centre's averaged strain `target` from the last commit; false if
-  // they stall
-  const auto solve = [&](double target)
+    auto law = std::make_unique<SofteningBar>(onset, failure_strain);
+    law_ = law.get();
+    material_ = std::make_unique<NonlocalMaterial<dim>>(
+        std::move(law),
+        NonlocalOperator<dim>(positions, radius, NonlocalOperator<dim>::Weight::wendland), 1.0,
+        elastic);
+    for (unsigned int i = 0; i < N; ++i) // the row-normalised weights, from the formula
+    {
+      double total = 0.0;
+      for (unsigned int j = 0; j < N; ++j)
+        total += (A_(i, j) =
+                      i == j ? 1.0 : wendland(std::abs(positions[i][0] - positions[j][0]), radius));
+      for (unsigned int j = 0; j < N; ++j)
+        A_(i, j) /= total;
+    }
+  }
+
+  /// Pulls the bar past half its peak stress, each step by the centre's averaged strain.
+  Result pull()
   {
-    double size = evaluate(strain, s, target);
+    Result result;
+    result.h = h_;
+    Vector<double> at_70(N_);
+    bool past_70 = false;
+    double reached = 0.0; // the target of the last commit
+    for (unsigned int step = 1; step <= 400; ++step)
+    {
+      // steps of eps0 / 20, of eps0 / 400 from 0.85 to 1.0 eps0 (over the peak: finer than the
+      // onsets of the centre's neighbours differ on the finest mesh, so that no step predicts them
+      // past it); a step whose iterations stall is cut in halves
+      const double goal = step <= 17   ? step * eps0 / 20.0
+                          : step <= 77 ? 0.85 * eps0 + (step - 17) * eps0 / 400.0
+                                       : eps0 + (step - 77) * eps0 / 20.0;
+      for (unsigned int cuts = 0; reached < goal;)
+      {
+        const double target = reached + std::ldexp(goal - reached, -int(cuts));
+        if (!solve(target))
+        {
+          if (++cuts > 10)
+          {
+            result.converged = false;
+            result.failure = "Newton's iterations stalled at the centre's averaged strain " +
+                             std::to_string(target / eps0) + " eps0 after 10 cuts";
+            return result;
+          }
+          continue;
+        }
+        for (auto& p : points_)
+          p.commit_increment();
+        material_->commit();
+        reached = target == goal ? goal : target, cuts = 0;
+        result.peak = std::max(result.peak, s_);
+        if (!past_70 && s_ < 0.7 * result.peak)
+          past_70 = true, at_70 = strain_;
+        if (s_ < 0.5 * result.peak)
+        {
+          for (unsigned int i = 0; i < N_; ++i)
+            result.U += h_ * strain_[i];
+          result.s = s_, result.strain = strain_, result.averaged = averaged_;
+          result.increment = strain_;
+          result.increment -= at_70;
+          return result;
+        }
+      }
+    }
+    result.converged = false;
+    result.failure = "the stress did not fall below half its peak in 400 steps";
+    return result;
+  }
+
+private:
+  /// The residual (stress minus s at every point, the control last) at the strains e; its size.
+  double evaluate(const Vector<double>& e, double stress, double target)
+  {
+    for (unsigned int i = 0; i < N_; ++i)
+    {
+      points_[i].F = unit_symmetric_tensor<dim>();
+      points_[i].F[0][0] += e[i];
+    }
+    material_->evaluate(points_);
+    A_.vmult(averaged_, e);
+    double size = std::abs(averaged_[centre_] - target) / eps0;
+    for (unsigned int i = 0; i < N_; ++i)
+      size = std::max(size, std::abs(residual_[i] = points_[i].P[0][0] - stress) / (M * eps0));
+    residual_[N_] = averaged_[centre_] - target;
+    return size;
+  }
+
+  /// Newton's iterations to the centre's averaged strain `target` from the last commit; on a
+  /// stall, false with the committed strains and stress restored.
+  bool solve(double target)
+  {
+    const Vector<double> strain_committed = strain_;
+    const double s_committed = s_;
+    double size = evaluate(strain_, s_, target);
     for (unsigned int it = 0; it < 60; ++it)
     {
       if (size < 1e-9)
         return true;
-      LAPACKFullMatrix<double> J(N + 1, N + 1);
-      for (unsigned int i = 0; i < N; ++i)
+      LAPACKFullMatrix<double> J(N_ + 1, N_ + 1);
+      for (unsigned int i = 0; i < N_; ++i)
       {
-        const double D = law.stiffness(i, averaged[i], it < 5);
-        for (unsigned int j = 0; j < N; ++j)
-          J(i, j) = C * ((i == j) - A(i, j)) + D * A(i, j);
-        J(i, N) = -1.0;
-        J(N, i) = A(centre, i);
+        const double D = law_->stiffness(i, averaged_[i], it < 5);
+        for (unsigned int j = 0; j < N_; ++j)
+          J(i, j) = C_ * ((i == j) - A_(i, j)) + D * A_(i, j);
+        J(i, N_) = -1.0;
+        J(N_, i) = A_(centre_, i);
       }
       J.compute_lu_factorization();
-      Vector<double> direction = residual;
+      Vector<double> direction = residual_;
       J.solve(direction);
       // backtracking: a full step that flips points between loading and unloading can cycle
-      const Vector<double> start = strain;
-      const double s_start = s;
+      const Vector<double> start = strain_;
+      const double s_start = s_;
       for (double length = 1.0;; length *= 0.5)
       {
-        strain = start;
-        strain.add(-length, direction);
-        s = s_start - length * direction[N];
-        const double trial = evaluate(strain, s, target);
+        strain_ = start;
+        strain_.add(-length, direction);
+        s_ = s_start - length * direction[N_];
+        const double trial = evaluate(strain_, s_, target);
         if (trial < size || length < 1e-3)
         {
           size = trial;
@@ -224,57 +275,26 @@ Result pull(unsigned int N, double radius, LocalElasticity elastic,
         }
       }
     }
+    strain_ = strain_committed, s_ = s_committed;
     return false;
-  };
-
-  bool past_70 = false;
-  double reached = 0.0; // the target of the last commit
-  for (unsigned int step = 1; step <= 400; ++step)
-  {
-    // steps of eps0 / 20, of eps0 / 400 from 0.85 to 1.0 eps0 (over the peak: finer than the onsets
-    // of the centre's neighbours differ on the finest mesh, so that no step predicts them past it);
-    // a step whose iterations stall is cut in halves
-    const double goal = step <= 17   ? step * eps0 / 20.0
-                        : step <= 77 ? 0.85 * eps0 + (step - 17) * eps0 / 400.0
-                                     : eps0 + (step - 77) * eps0 / 20.0;
-    for (unsigned int cuts = 0; reached < goal;)
-    {
-      const double target = reached + std::ldexp(goal - reached, -int(cuts));
-      const Vector<double> strain_committed = strain;
-      const double s_committed = s;
-      if (!solve(target))
-      {
-        strain = strain_committed, s = s_committed;
-        if (++cuts > 10)
-        {
-          result.converged = false;
-          result.failure = "Newton's iterations stalled at the centre's averaged strain " +
-                           std::to_string(target / eps0) + " eps0 after 10 cuts";
-          return result;
-        }
-        continue;
-      }
-      for (auto& p : points)
-        p.commit_increment();
-      material.commit();
-      reached = target == goal ? goal : target, cuts = 0;
-      result.peak = std::max(result.peak, s);
-      if (!past_70 && s < 0.7 * result.peak)
-        past_70 = true, at_70 = strain;
-      if (s < 0.5 * result.peak)
-      {
-        for (unsigned int i = 0; i < N; ++i)
-          result.U += h * strain[i];
-        result.s = s, result.strain = strain, result.averaged = averaged;
-        result.increment = strain;
-        result.increment -= at_70;
-        return result;
-      }
-    }
   }
-  result.converged = false;
-  result.failure = "the stress did not fall below half its peak in 400 steps";
-  return result;
+
+  unsigned int N_;
+  double h_;
+  unsigned int centre_;
+  SofteningBar* law_ = nullptr; ///< owned by material_
+  std::unique_ptr<NonlocalMaterial<dim>> material_;
+  FullMatrix<double> A_;
+  double C_; ///< C_e in uniaxial strain
+  std::vector<IpState<dim>> points_;
+  Vector<double> strain_, averaged_, residual_;
+  double s_ = 0.0;
+};
+
+Result pull(unsigned int N, double radius, LocalElasticity elastic,
+            double failure_strain = 10.0 * eps0)
+{
+  return Bar(N, radius, elastic, failure_strain).pull();
 }
 
 double spread(const std::vector<double>& v)
@@ -285,15 +305,14 @@ double spread(const std::vector<double>& v)
     mean += x / v.size();
   return (*hi - *lo) / mean;
 }
-} // namespace
 
-int main()
+constexpr unsigned int meshes[] = {21, 41, 81, 161};
+
+/// Local and local elastic (C_e = M) on the four meshes: the closed form of the local band, and the
+/// issue's two criteria on the bar. False if a run did not get past half its peak.
+bool check_meshes(Checker& c, std::vector<Result>& local, std::vector<Result>& nonlocal)
 {
-  Checker c("nonlocal_softening_bar");
-  const std::vector<unsigned int> meshes{21, 41, 81, 161};
   const LocalElasticity elastic{0.0, 0.5 * M}; // C_e = the elastic modulus: lambda + 2 mu = M
-  std::vector<Result> local, nonlocal;
-  std::cout << std::setprecision(4);
   for (const unsigned int N : meshes)
   {
     local.push_back(pull(N, 0.0, {}));
@@ -303,7 +322,7 @@ int main()
                  local.back().failure) ||
         !c.truth("local elastic: pulled past half the peak" + at, nonlocal.back().converged,
                  nonlocal.back().failure))
-      return c.summary();
+      return false;
     // the closed form of the local bar: the centre (onset 0.9 eps0) on its envelope, the rest
     // elastic at s
     const Result& l = local.back();
@@ -343,7 +362,12 @@ int main()
           std::abs(elastic_us[3] - elastic_us[2]) < std::abs(elastic_us[2] - elastic_us[1]) &&
               std::abs(elastic_width[3] - elastic_width[2]) <
                   std::abs(elastic_width[2] - elastic_width[1]));
+  return true;
+}
 
+/// What sets the band's width (N = 81; @p reference: C_e = M, H = M / 9).
+void check_what_sets_the_width(Checker& c, const Result& reference)
+{
   // what sets the band (N = 81): C_e against the softening modulus H. With H = M / 9 and C_e = 0.3,
   // 1 and 3 M (C_e / H = 2.7, 9, 27) it widens; with H = M / 4 and C_e = M (C_e / H = 4) it falls
   // between the first two, though C_e is that of the second
@@ -352,7 +376,7 @@ int main()
        std::vector<std::pair<double, double>>{{0.3, 10.0}, {1.0, 10.0}, {3.0, 10.0}, {1.0, 5.0}})
   {
     const Result r = ratio == 1.0 && failure == 10.0
-                         ? nonlocal[2]
+                         ? reference
                          : pull(81, R, {0.0, 0.5 * ratio * M}, failure * eps0);
     const double H = M / (failure - 1.0);
     const std::string at =
@@ -371,7 +395,11 @@ int main()
     c.truth("local elastic: C_e / H, not C_e alone, sets the width (C_e / H = 4 between 2.7 and 9)",
             width[0] < width[3] && width[3] < width[1]);
   }
+}
 
+/// [LSYF]'s total strain against the local runs @p local of the first two meshes.
+void check_total_strain(Checker& c, const std::vector<Result>& local)
+{
   // [LSYF]'s total strain, on the meshes where its inverse stays moderate (R up to 4 spacings)
   for (const unsigned int k : {0u, 1u})
   {
@@ -380,9 +408,9 @@ int main()
     const std::string at = " (N = " + std::to_string(N) + ")";
     if (!c.truth("total strain: pulled past half the peak" + at, total.converged, total.failure))
       continue;
-    // both runs take the same steps of the centre's averaged strain and solve the same pointwise
-    // law in it (sigma(Fbar_i) = s), so the averaged field is the local one: it localises in one
-    // point
+    // both runs take the same steps of the centre's averaged strain (neither cuts one here) and
+    // solve the same pointwise law in it (sigma(Fbar_i) = s), so the averaged field is the local
+    // one: it localises in one point
     double worst = 0.0, size = 0.0;
     for (unsigned int i = 0; i < N; ++i)
       worst = std::max(worst, std::abs(total.averaged[i] - local[k].strain[i])),
@@ -396,6 +424,19 @@ int main()
               << *std::min_element(total.strain.begin(), total.strain.end()) / eps0 << " to "
               << *std::max_element(total.strain.begin(), total.strain.end()) / eps0 << " eps0"
               << std::endl;
+  }
+}
+} // namespace
+
+int main()
+{
+  Checker c("nonlocal_softening_bar");
+  std::cout << std::setprecision(4);
+  std::vector<Result> local, nonlocal;
+  if (check_meshes(c, local, nonlocal))
+  {
+    check_what_sets_the_width(c, nonlocal[2]);
+    check_total_strain(c, local);
   }
   return c.summary();
 }

@@ -25,10 +25,11 @@
 #              (results/problem1_ensemble.txt)
 #   problem4   problem 4 (issue 37): plane-strain biaxial compression of
 #              40 x 80 x 5 mm with lsyf_300 RVEs (problem4.prm) on the meshes
-#              4x8, 6x12 and 8x16 (one-point elements), local, and nonlocal
-#              on 6x12 and 8x16 (Wendland's weight, R = 11.8 mm: the
-#              half-value width of [LSYF]'s bell with 2R = 13.5 mm), 2 ranks
-#              each; also 2x4 local at 4 and 1 /s (the rate's effect); a run
+#              4x8, 6x12, 8x16 and 10x20 (one-point elements), local, and
+#              nonlocal (Wendland's weight, R = 11.8 mm: the half-value width
+#              of [LSYF]'s bell with 2R = 13.5 mm), the local elastic
+#              formulation on 6x12-10x20 and two single runs, 2 ranks each;
+#              also 2x4 local at 4 and 1 /s (the rate's effect); a run
 #              that stops (an RVE fails) keeps its converged rows and the
 #              others go on; problem4.py's tables and PNGs
 #   problem3   problem 3 (issue 37): simple shear of 118 x 50.6 x 12.7 mm on

@@ -37,7 +37,7 @@ import numpy as np  # noqa: E402
 from band_tools import inplane_band, plot_curves  # noqa: E402
 
 WIDTH, DEPTH, P_CONFINING = 0.04, 0.005, 4.16e5
-# families: case-name pattern and meshes; C_e's E in MPa for the local elastic formulation
+# families: case-name pattern and meshes (le5: the local elastic formulation, C_e of E = 5 MPa)
 FAMILIES = {"local": ("problem4_local_{}", ["4x8", "6x12", "8x16", "10x20"]),
             "nonlocal R = 11.8 mm": ("problem4_R11.8_{}", ["4x8", "6x12", "8x16", "10x20"]),
             "local elastic 5 MPa, R = 11.8 mm": ("problem4_R11.8_le5_{}", ["6x12", "8x16", "10x20"])}

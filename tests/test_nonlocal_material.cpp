@@ -5,7 +5,7 @@
 // - a pattern alternating at the point spacing gets the stiffness lambda D
 //   ([LSYF]'s total strain) or lambda D + (1 - lambda) C ('local elastic'),
 //   lambda = sum_k a(kh) (-1)^k / sum_k a(kh) the average's eigenvalue for it,
-//   computed here from Wendland's formula: 0.20 at R = 2.5 h, 0.03 at 4 h;
+//   computed here from Wendland's function: 0.20 at R = 2.5 h, 0.03 at 4 h;
 // - a bar in series with one point of half the modulus, in equilibrium when
 //   the stress is the same at every point: with total strain that is the
 //   strain W^-1 (s / D), which the test builds and feeds to the wrapper (every
@@ -18,6 +18,7 @@
 #include "check.h"
 #include "nonlocal/nonlocal_material.h"
 #include "nonlocal/nonlocal_operator.h"
+#include "row_weights.h"
 
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -61,25 +62,13 @@ private:
   std::vector<double> scale_;
 };
 
-double wendland(double r, double R)
-{
-  const double s = r / R;
-  return s >= 1.0 ? 0.0 : std::pow(1.0 - s, 4) * (4.0 * s + 1.0);
-}
-
 /// The row-normalised weights a*_IJ of the row, from the formula (not the operator).
 FullMatrix<double> weights(double R)
 {
-  FullMatrix<double> W(n, n);
+  std::vector<double> x(n);
   for (unsigned int i = 0; i < n; ++i)
-  {
-    double total = 0.0;
-    for (unsigned int j = 0; j < n; ++j)
-      total += (W(i, j) = wendland(std::abs(double(i) - double(j)), R));
-    for (unsigned int j = 0; j < n; ++j)
-      W(i, j) /= total;
-  }
-  return W;
+    x[i] = double(i);
+  return row_weights(x, R);
 }
 
 /// The wrapper's first Piola-Kirchhoff stress for the given F (F_committed = Fbar_n = I).
@@ -117,7 +106,10 @@ void check_pattern_stiffness(Checker& c, double R)
 {
   double num = 0.0, den = 0.0;
   for (int k = -int(R); k <= int(R); ++k)
-    num += wendland(std::abs(k), R) * (k % 2 == 0 ? 1.0 : -1.0), den += wendland(std::abs(k), R);
+  {
+    const double a = NonlocalOperator<dim>::wendland(std::abs(k), R);
+    num += a * (k % 2 == 0 ? 1.0 : -1.0), den += a;
+  }
   const double lambda = num / den, eps = 1e-7, C = 0.5 * M; // C_e at half the material's modulus
   Vector<double> strain(n);
   for (unsigned int i = 0; i < n; ++i)

@@ -7,7 +7,7 @@
 // dips linearly to 0.9 eps0 at the centre over |x - L/2| < 0.1 L (the same
 // weak zone on every mesh) so that the band has a place. The real
 // NonlocalMaterial gives every stress; the Jacobian of the Newton iterations
-// comes from the formulas (the weights from Wendland's formula, not from the
+// comes from the formulas (the weights assembled in row_weights.h, not by the
 // operator), so a wrapper that computed something else would not converge.
 // Load control: the averaged strain of the centre point, in steps cut in
 // halves where the iterations stall.
@@ -29,6 +29,7 @@
 #include "check.h"
 #include "nonlocal/nonlocal_material.h"
 #include "nonlocal/nonlocal_operator.h"
+#include "row_weights.h"
 
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
@@ -109,12 +110,6 @@ private:
   std::vector<double> onset_, kappa_, kappa_trial_;
 };
 
-double wendland(double r, double radius)
-{
-  const double s = r / radius;
-  return s >= 1.0 ? 0.0 : std::pow(1.0 - s, 4) * (4.0 * s + 1.0);
-}
-
 /// What a run keeps: the state where the stress first falls below half its peak.
 struct Result
 {
@@ -154,15 +149,10 @@ public:
         std::move(law),
         NonlocalOperator<dim>(positions, radius, NonlocalOperator<dim>::Weight::wendland), 1.0,
         elastic);
-    for (unsigned int i = 0; i < N; ++i) // the row-normalised weights, from the formula
-    {
-      double total = 0.0;
-      for (unsigned int j = 0; j < N; ++j)
-        total += (A_(i, j) =
-                      i == j ? 1.0 : wendland(std::abs(positions[i][0] - positions[j][0]), radius));
-      for (unsigned int j = 0; j < N; ++j)
-        A_(i, j) /= total;
-    }
+    std::vector<double> x(N);
+    for (unsigned int i = 0; i < N; ++i)
+      x[i] = positions[i][0];
+    A_ = row_weights(x, radius); // from the formula, not from the operator
   }
 
   /// Pulls the bar past half its peak stress, each step by the centre's averaged strain.

@@ -90,19 +90,20 @@ def profile(points, gamma, normal, bin):
     return (0.5 * (edges[:-1] + edges[1:]))[keep], means[keep], explained
 
 
-def band_width(points, gamma, bin=None):
+def band_width(points, gamma, bin=None, band_angles=range(180)):
     """(width, band direction in degrees from x, profile (d, mean gamma)) of the
-    band of `gamma`: over the directions 0, 1, ... 179 degrees, the normal whose
-    profile explains the largest share of the variance of gamma is the band's
-    (the bins then run along the band); the width is that profile's
-    full width at half maximum (NaN without two crossings). `bin` defaults to
-    max(0.5 mm, half the median nearest-neighbour spacing of the points)."""
+    band of `gamma`: over the band directions `band_angles` (degrees from x;
+    default 0, 1, ... 179), the one whose normal's profile explains the
+    largest share of the variance of gamma is the band's (the bins then run
+    along the band); the width is that profile's full width at half maximum
+    (NaN without two crossings). `bin` defaults to max(0.5 mm, half the
+    median nearest-neighbour spacing of the points)."""
     if bin is None:
         gaps = np.linalg.norm(points[:, None, :] - points[None, :, :], axis=2)
         np.fill_diagonal(gaps, np.inf)
         bin = max(0.5e-3, 0.5 * np.median(gaps.min(axis=1)))
     best = None
-    for deg in range(180):
+    for deg in sorted((angle + 90) % 180 for angle in band_angles):  # the band's normals
         normal = np.array([np.cos(np.radians(deg)), np.sin(np.radians(deg))])
         centres, means, explained = profile(points, gamma, normal, bin)
         if best is None or explained > best[0]:

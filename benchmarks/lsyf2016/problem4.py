@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """[LSYF] problem 4 (issue 37): plane-strain biaxial compression, local
 against nonlocal on three meshes each (FAMILIES; the spreads tabled: SPREADS). Reads
-RESULTS/problem4_{local,R11.8,R11.8_le5}_MESH/, the single local elastic runs
-problem4_R*_le50_*/ and problem4_2x4_rate{4,1}/ (run.sh problem4), prints the tables of the
+RESULTS/problem4_{local,R11.8,R11.8_le5,R11.8_le1}_MESH/, the single local elastic runs
+problem4_R*_le{50,1}_*/ and problem4_2x4_rate{4,1}/ (run.sh problem4), prints the tables of the
 README and writes into RESULTS:
   problem4_curves.png   stress ratio against axial strain, every case
   problem4_bands.png    the in-plane shear strain increment from 5 to 6 %
@@ -20,7 +20,14 @@ to the end of its shortest run, (max - min) / mean of the ratio over its
 meshes. A run that stopped (an RVE lost a particle) counts with the rows
 it converged. Band width:
 benchmarks/lbs2018/band_width.py on the increment of F's in-plane block
-(x, y) over the last four rows, at the IPs' reference positions.
+(x, y) over the last four rows, at the IPs' reference positions, among the
+inclined directions (INCLINED) and, beside it, among all.
+
+The band's softening modulus in shear, H_s = (tau_peak - tau_end) / gamma_band
+with tau = (sigma_a - p_c) / 2 and gamma_band the largest shear strain
+increment from the peak row to the end, is what C_e's shear modulus is
+measured against (the softening bar of tests/test_nonlocal_softening_bar.cpp:
+the band's width in R grows with C_e / H).
 
 Usage: problem4.py RESULTS   (Debian's python3 with numpy, h5py, matplotlib)
 """
@@ -37,18 +44,28 @@ import numpy as np  # noqa: E402
 from band_tools import inplane_band, plot_curves  # noqa: E402
 
 WIDTH, DEPTH, P_CONFINING = 0.04, 0.005, 4.16e5
-# families: case-name pattern and meshes (le5: the local elastic formulation, C_e of E = 5 MPa)
-FAMILIES = {"local": ("problem4_local_{}", ["4x8", "6x12", "8x16", "10x20"]),
-            "nonlocal R = 11.8 mm": ("problem4_R11.8_{}", ["4x8", "6x12", "8x16", "10x20"]),
-            "local elastic 5 MPa, R = 11.8 mm": ("problem4_R11.8_le5_{}", ["6x12", "8x16", "10x20"])}
+MESHES_R = ["6x12", "8x16", "10x20"]  # the meshes whose IPs R = 11.8 mm reaches
+# families: case-name pattern and meshes (le5, le1: the local elastic formulation, C_e of E = 5, 1 MPa)
+FAMILIES = {"local": ("problem4_local_{}", ["4x8"] + MESHES_R),
+            "nonlocal R = 11.8 mm": ("problem4_R11.8_{}", ["4x8"] + MESHES_R),
+            "local elastic 5 MPa, R = 11.8 mm": ("problem4_R11.8_le5_{}", MESHES_R),
+            "local elastic 1 MPa, R = 11.8 mm": ("problem4_R11.8_le1_{}", MESHES_R)}
 # the mesh spreads tabled: [LSYF]'s three meshes, and the three whose IPs R = 11.8 mm reaches
-SPREADS = [("local", ["4x8", "6x12", "8x16"]), ("nonlocal R = 11.8 mm", ["4x8", "6x12", "8x16"]),
-           ("local", ["6x12", "8x16", "10x20"]), ("nonlocal R = 11.8 mm", ["6x12", "8x16", "10x20"]),
-           ("local elastic 5 MPa, R = 11.8 mm", ["6x12", "8x16", "10x20"])]
+SPREADS = [("local", ["4x8", "6x12", "8x16"]), ("nonlocal R = 11.8 mm", ["4x8", "6x12", "8x16"])] + [
+    (fam, MESHES_R) for fam in FAMILIES]
 # single runs of the local elastic formulation
 LOCAL_ELASTIC = {"local elastic 50 MPa, R = 11.8 mm 8x16": "problem4_R11.8_le50_8x16",
-                 "local elastic 50 MPa, R = 20 mm 4x8": "problem4_R20_le50_4x8"}
+                 "local elastic 50 MPa, R = 20 mm 4x8": "problem4_R20_le50_4x8",
+                 "local elastic 1 MPa, R = 8 mm 8x16": "problem4_R8_le1_8x16",
+                 "local elastic 1 MPa, R = 16 mm 8x16": "problem4_R16_le1_8x16"}
+# the band width against R: (R in mm, case) at C_e of E = 1 MPa on 8x16
+RADII = [(8.0, "local elastic 1 MPa, R = 8 mm 8x16"), (11.8, "local elastic 1 MPa, R = 11.8 mm 8x16"),
+         (16.0, "local elastic 1 MPa, R = 16 mm 8x16")]
 BAND_ROWS = 4  # the band of the last BAND_ROWS rows' increment (1 % of axial strain)
+# the band directions searched, degrees from x: a shear band of biaxial compression is inclined
+# (45 deg + half the friction angle from the minor stress, x, for Coulomb); a near-horizontal
+# "band" is the crossing of a conjugate pair or a platen's dead zone, a near-vertical one the barrel
+INCLINED = [a for a in range(180) if 20 <= a <= 70 or 110 <= a <= 160]
 
 
 def curve(case_dir):
@@ -125,6 +142,110 @@ def stress_parts(case_dir, row):
     return term.mean(), np.abs(P[:, 1, 1]).mean(), -sigma[:, 0, 0].mean(), (np.linalg.det(F) - 1).mean()
 
 
+def band_softening(curves, case_dir, k):
+    """(peak strain, tau_peak, tau_end, gamma_band, H_s) of case `k`: the band's softening modulus in
+    shear from the platens' peak to the end (module docstring)."""
+    e, s, _ = curves[k]
+    peak = int(np.argmax(s))
+    _, gamma, _, _, _ = inplane_band(os.path.join(case_dir, "out", "history.h5"), len(s) - 1 - peak)
+    tau = (s - P_CONFINING) / 2
+    return e[peak], tau[peak], tau[-1], gamma.max(), (tau[peak] - tau[-1]) / gamma.max()
+
+
+def print_spreads(curves):
+    print("\n## spread over the meshes from the peak of the family's mean: (max - min) / mean of the ratio")
+    print("| family | meshes | peak of the mean at | largest | mean | at the end | largest from 1 % |")
+    print("|---|---|---|---|---|---|---|")
+    for fam, meshes in SPREADS:
+        have = [f"{fam} {m}" for m in meshes if f"{fam} {m}" in curves]
+        if len(have) < 2:
+            continue
+        s, s1 = spread(curves, have), spread(curves, have, 0.01)
+        print(f"| {fam} | {', '.join(h.split()[-1] for h in have)} | {100 * s[0][0]:.2f} % | "
+              f"{100 * max(v for _, v in s):.1f} % | {100 * np.mean([v for _, v in s]):.1f} % | "
+              f"{100 * s[-1][1]:.1f} % | {100 * max(v for _, v in s1):.1f} % |")
+    if {"local 2x4, 4 /s", "local 2x4, 1 /s"} <= set(curves):
+        e, r4 = curves["local 2x4, 4 /s"][0], curves["local 2x4, 4 /s"][2]
+        r1 = curves["local 2x4, 1 /s"][2]
+        late = e >= 0.02
+        print(f"\nrate (local 2x4): from 2 % the ratio at 4 /s is {r4[late].min():.3f}-{r4[late].max():.3f} "
+              f"(mean {r4[late].mean():.3f}), at 1 /s {r1[late].min():.3f}-{r1[late].max():.3f} (mean {r1[late].mean():.3f})")
+
+
+def print_softening(curves, done):
+    print("\n## the band's softening modulus in shear, H_s (local runs), against C_e's shear modulus")
+    print("| case | peak at | tau peak -> end (kPa) | gamma in the band | H_s (MPa) |")
+    print("|---|---|---|---|---|")
+    moduli = []
+    for k in [f"local {m}" for m in MESHES_R]:
+        if k in done:
+            e, t0, t1, g, h = band_softening(curves, done[k], k)
+            moduli.append(h)
+            print(f"| {k} | {100 * e:.2f} % | {t0 / 1e3:.0f} -> {t1 / 1e3:.0f} | {g:.3f} | {h / 1e6:.2f} |")
+    if moduli:
+        print()
+        for E in (50e6, 5e6, 1e6):
+            mu = E / (2 * 1.2)  # nu = 0.2
+            print(f"- C_e of E = {E / 1e6:g} MPa: shear modulus {mu / 1e6:.3g} MPa, "
+                  f"{mu / max(moduli):.1f}-{mu / min(moduli):.1f} times H_s")
+
+
+def print_load_parts(curves, done):
+    print("\n## what carries the load: IP means of the local elastic term and of the RVEs' stress (kPa)")
+    print("| case | axial strain | C_e : (E - Ebar), yy | P_yy | RVEs' sigma_11 | det F - 1 |")
+    print("|---|---|---|---|---|---|")
+    for k in ["local 8x16", "nonlocal R = 11.8 mm 8x16", "local elastic 5 MPa, R = 11.8 mm 8x16",
+              "local elastic 50 MPa, R = 11.8 mm 8x16", "local elastic 1 MPa, R = 11.8 mm 8x16"]:
+        if k not in done:
+            continue
+        for row in (3, 11, 23):
+            term, P_yy, s11, dJ = stress_parts(done[k], row)
+            print(f"| {k} | {100 * curves[k][0][row + 1]:.0f} % | {term / 1e3:.0f} | {P_yy / 1e3:.0f} | "
+                  f"{s11 / 1e3:.0f} | {dJ:.4f} |")
+
+
+def print_bands(done, path):
+    """The band table (inclined directions, and all), the band against R, and the PNG of the fields."""
+    print(f"\n## band width (band_width.py, increment over the last {BAND_ROWS} rows)")
+    print("| case | band width (mm), inclined | angle (deg from x) | among all directions (mm) | angle | "
+          "gamma max |")
+    print("|---|---|---|---|---|---|")
+    fig, axes = plt.subplots(1, len(done), figsize=(2.2 * len(done), 4.6), squeeze=False)
+    widths = {}
+    for ax, (k, d) in zip(axes[0], done.items()):
+        history = os.path.join(d, "out", "history.h5")
+        x, g, width, angle, _ = inplane_band(history, BAND_ROWS, INCLINED)
+        _, _, width_all, angle_all, _ = inplane_band(history, BAND_ROWS)
+        widths[k] = width
+        print(f"| {k} | {1e3 * width:.1f} | {angle:.0f} | {1e3 * width_all:.1f} | {angle_all:.0f} | {g.max():.4f} |")
+        sc = ax.scatter(1e3 * x[:, 0], 1e3 * x[:, 1], c=g, s=3000 / len(x), marker="s", cmap="viridis")
+        ax.set_title(f"{k}\nwidth {1e3 * width:.1f} mm", fontsize=7)
+        ax.set_aspect("equal")
+        ax.set_xlim(0, 40)
+        ax.set_ylim(0, 80)
+        ax.tick_params(labelsize=6)
+        fig.colorbar(sc, ax=ax, shrink=0.6).ax.tick_params(labelsize=6)
+    fig.suptitle("in-plane shear strain increment, last 1 % of axial strain (x, y in mm)", fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    have = [(r, k) for r, k in RADII if k in widths]
+    if have:
+        print("\n## band width against R (inclined, last 1 %)")
+        print("| case | R (mm) | band width (mm) | width / R |")
+        print("|---|---|---|---|")
+        for r, k in have:
+            print(f"| {k} | {r:g} | {1e3 * widths[k]:.1f} | {1e3 * widths[k] / r:.2f} |")
+
+
+def print_cost(done):
+    print("\n## cost (2 ranks on the 2-core VM, walls shared with other runs)")
+    print("| case | wall (s) | RVEs | RVE solves | DEM steps (all RVEs) |")
+    print("|---|---|---|---|---|")
+    for k, d in done.items():
+        wall, n_rve, solves, dem = cost(d)
+        print(f"| {k} | {wall} | {n_rve} | {solves} | {dem:.3g} |")
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
@@ -148,60 +269,11 @@ def main():
     print("\n## the mesh families, every 0.5 %")
     ratio_table(curves, [f"{fam} {m}" for fam, (_, meshes) in FAMILIES.items() for m in meshes
                          if f"{fam} {m}" in curves], 2)
-
-    print("\n## spread over the meshes from the peak of the family's mean: (max - min) / mean of the ratio")
-    print("| family | meshes | peak of the mean at | largest | mean | at the end | largest from 1 % |")
-    print("|---|---|---|---|---|---|---|")
-    for fam, meshes in SPREADS:
-        have = [f"{fam} {m}" for m in meshes if f"{fam} {m}" in curves]
-        if len(have) < 2:
-            continue
-        s, s1 = spread(curves, have), spread(curves, have, 0.01)
-        print(f"| {fam} | {', '.join(h.split()[-1] for h in have)} | {100 * s[0][0]:.2f} % | "
-              f"{100 * max(v for _, v in s):.1f} % | {100 * np.mean([v for _, v in s]):.1f} % | "
-              f"{100 * s[-1][1]:.1f} % | {100 * max(v for _, v in s1):.1f} % |")
-    if {"local 2x4, 4 /s", "local 2x4, 1 /s"} <= set(curves):
-        e, r4 = curves["local 2x4, 4 /s"][0], curves["local 2x4, 4 /s"][2]
-        r1 = curves["local 2x4, 1 /s"][2]
-        late = e >= 0.02
-        print(f"\nrate (local 2x4): from 2 % the ratio at 4 /s is {r4[late].min():.3f}-{r4[late].max():.3f} "
-              f"(mean {r4[late].mean():.3f}), at 1 /s {r1[late].min():.3f}-{r1[late].max():.3f} (mean {r1[late].mean():.3f})")
-    print("\n## what carries the load: IP means of the local elastic term and of the RVEs' stress (kPa)")
-    print("| case | axial strain | C_e : (E - Ebar), yy | P_yy | RVEs' sigma_11 | det F - 1 |")
-    print("|---|---|---|---|---|---|")
-    for k in ["local 8x16", "nonlocal R = 11.8 mm 8x16", "local elastic 5 MPa, R = 11.8 mm 8x16",
-              "local elastic 50 MPa, R = 11.8 mm 8x16"]:
-        if k not in done:
-            continue
-        for row in (3, 11, 23):
-            term, P_yy, s11, dJ = stress_parts(done[k], row)
-            print(f"| {k} | {100 * curves[k][0][row + 1]:.0f} % | {term / 1e3:.0f} | {P_yy / 1e3:.0f} | "
-                  f"{s11 / 1e3:.0f} | {dJ:.4f} |")
-    print(f"\n## band width (band_width.py, increment over the last {BAND_ROWS} rows)")
-    print("| case | band width (mm) | band angle (deg from x) | gamma max |")
-    print("|---|---|---|---|")
-    fig, axes = plt.subplots(1, len(done), figsize=(2.2 * len(done), 4.6), squeeze=False)
-    for ax, (k, d) in zip(axes[0], done.items()):
-        x, g, width, angle, _ = inplane_band(os.path.join(d, "out", "history.h5"), BAND_ROWS)
-        print(f"| {k} | {1e3 * width:.1f} | {angle:.0f} | {g.max():.4f} |")
-        sc = ax.scatter(1e3 * x[:, 0], 1e3 * x[:, 1], c=g, s=3000 / len(x), marker="s", cmap="viridis")
-        ax.set_title(f"{k}\nwidth {1e3 * width:.1f} mm", fontsize=7)
-        ax.set_aspect("equal")
-        ax.set_xlim(0, 40)
-        ax.set_ylim(0, 80)
-        ax.tick_params(labelsize=6)
-        fig.colorbar(sc, ax=ax, shrink=0.6).ax.tick_params(labelsize=6)
-    fig.suptitle("in-plane shear strain increment, last 1 % of axial strain (x, y in mm)", fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(results, "problem4_bands.png"), dpi=120)
-
-    print("\n## cost (2 ranks on the 2-core VM, walls shared with other runs)")
-    print("| case | wall (s) | RVEs | RVE solves | DEM steps (all RVEs) |")
-    print("|---|---|---|---|---|")
-    for k, d in done.items():
-        wall, n_rve, solves, dem = cost(d)
-        print(f"| {k} | {wall} | {n_rve} | {solves} | {dem:.3g} |")
-
+    print_spreads(curves)
+    print_softening(curves, done)
+    print_load_parts(curves, done)
+    print_bands(done, os.path.join(results, "problem4_bands.png"))
+    print_cost(done)
     plot_curves({k: (e, r) for k, (e, _, r) in curves.items()}, "axial strain (%)", "stress ratio (platens)",
                 os.path.join(results, "problem4_curves.png"), dashed=lambda k: not k.startswith("local"))
     return 0

@@ -23,7 +23,7 @@ set(FE2DEM_UNIT_TESTS
   frame_3d_face_triangulation frame_3d_corner_choice frame_servo_controller frame_motion_paths frame_progress_watch frame_membrane_push_and_balance
   layers_solver_without_liggghts layers_solver_parts_without_liggghts layers_common_without_liggghts layers_rve_driver_without_liggghts docs_parameters_up_to_date
   macro_one_point_element_modes macro_dynamic_relaxation_estimates
-  macro_elastic_extension macro_nonlocal_operator)
+  macro_elastic_extension macro_nonlocal_operator benchmark_band_width_known_bands)
 
 # Runs of more than ~12 s alone on one core, each with the reason it is not
 # in the default tier beside a cheaper sibling that keeps the guarantee

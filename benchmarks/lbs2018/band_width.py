@@ -76,6 +76,13 @@ def particle_field(dump0, dump1, spacing=0.5e-3, radius=1.0e-3):
     return np.array(points), shear_strain(np.array(grads))
 
 
+# band directions of biaxial compression, degrees from x (the minor stress): a shear band is
+# inclined (45 deg + half the friction angle for Coulomb); a near-horizontal "band" is the crossing
+# of a conjugate pair or a platen's dead zone, a near-vertical one the barrel. A band found on an
+# edge of this range (20 or 160 deg) is a feature outside it, not a band (tests/check_band_width.py).
+INCLINED = [a for a in range(180) if 20 <= a <= 70 or 110 <= a <= 160]
+
+
 def profile(points, gamma, normal, bin):
     """(bin centres d, mean gamma, share of the variance of gamma the bin means explain) of the
     points binned by d = normal . x (bins with >= 2 points)."""

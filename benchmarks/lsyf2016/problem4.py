@@ -20,8 +20,9 @@ to the end of its shortest run, (max - min) / mean of the ratio over its
 meshes. A run that stopped (an RVE lost a particle) counts with the rows
 it converged. Band width:
 benchmarks/lbs2018/band_width.py on the increment of F's in-plane block
-(x, y) over the last four rows, at the IPs' reference positions, among the
-inclined directions (INCLINED) and, beside it, among all.
+(x, y) over the last 4 and 16 rows (1 and 4 % of axial strain), at the
+IPs' reference positions, among the inclined directions (INCLINED) and,
+beside it, among all.
 
 The band's softening modulus in shear, H_s = (tau_peak - tau_end) / gamma_band
 with tau = (sigma_a - p_c) / 2 and gamma_band the largest shear strain
@@ -41,7 +42,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from band_tools import inplane_band, plot_curves  # noqa: E402
+from band_tools import bw, inplane_band, plot_curves  # noqa: E402
 
 WIDTH, DEPTH, P_CONFINING = 0.04, 0.005, 4.16e5
 MESHES_R = ["6x12", "8x16", "10x20"]  # the meshes whose IPs R = 11.8 mm reaches
@@ -56,16 +57,15 @@ SPREADS = [("local", ["4x8", "6x12", "8x16"]), ("nonlocal R = 11.8 mm", ["4x8", 
 # single runs of the local elastic formulation
 LOCAL_ELASTIC = {"local elastic 50 MPa, R = 11.8 mm 8x16": "problem4_R11.8_le50_8x16",
                  "local elastic 50 MPa, R = 20 mm 4x8": "problem4_R20_le50_4x8",
-                 "local elastic 1 MPa, R = 8 mm 8x16": "problem4_R8_le1_8x16",
-                 "local elastic 1 MPa, R = 16 mm 8x16": "problem4_R16_le1_8x16"}
-# the band width against R: (R in mm, case) at C_e of E = 1 MPa on 8x16
-RADII = [(8.0, "local elastic 1 MPa, R = 8 mm 8x16"), (11.8, "local elastic 1 MPa, R = 11.8 mm 8x16"),
-         (16.0, "local elastic 1 MPa, R = 16 mm 8x16")]
-BAND_ROWS = 4  # the band of the last BAND_ROWS rows' increment (1 % of axial strain)
-# the band directions searched, degrees from x: a shear band of biaxial compression is inclined
-# (45 deg + half the friction angle from the minor stress, x, for Coulomb); a near-horizontal
-# "band" is the crossing of a conjugate pair or a platen's dead zone, a near-vertical one the barrel
-INCLINED = [a for a in range(180) if 20 <= a <= 70 or 110 <= a <= 160]
+                 "local elastic 1 MPa, R = 8 mm 10x20": "problem4_R8_le1_10x20",
+                 "local elastic 1 MPa, R = 16 mm 10x20": "problem4_R16_le1_10x20"}
+# the band width against R: (R in mm, case) at C_e of E = 1 MPa on the finest mesh (4 mm elements)
+RADII = [(8.0, "local elastic 1 MPa, R = 8 mm 10x20"), (11.8, "local elastic 1 MPa, R = 11.8 mm 10x20"),
+         (16.0, "local elastic 1 MPa, R = 16 mm 10x20")]
+# the band of the increment over the last rows: 4 (1 % of axial strain, the band as it is at the end)
+# and 16 (4 %, from 2 %: past every run's peak, the band that carried the softening)
+BAND_ROWS = (4, 16)
+INCLINED = bw.INCLINED  # the band directions searched (band_width.py)
 
 
 def curve(case_dir):
@@ -205,36 +205,42 @@ def print_load_parts(curves, done):
 
 
 def print_bands(done, path):
-    """The band table (inclined directions, and all), the band against R, and the PNG of the fields."""
-    print(f"\n## band width (band_width.py, increment over the last {BAND_ROWS} rows)")
-    print("| case | band width (mm), inclined | angle (deg from x) | among all directions (mm) | angle | "
-          "gamma max |")
-    print("|---|---|---|---|---|---|")
-    fig, axes = plt.subplots(1, len(done), figsize=(2.2 * len(done), 4.6), squeeze=False)
+    """The band table (inclined directions over the last 1 and 4 %, and all over the last 1 %), the
+    band against R, and the PNG of the fields (a row per interval)."""
+    print("\n## band width (band_width.py; increment over the last 1 % and the last 4 % of axial strain)")
+    print("| case | band width (mm), last 1 %, inclined | angle (deg from x) | last 4 %, inclined | angle | "
+          "last 1 %, among all directions | angle | gamma max, last 1 % |")
+    print("|---|---|---|---|---|---|---|---|")
+    fig, axes = plt.subplots(len(BAND_ROWS), len(done), figsize=(2.2 * len(done), 4.6 * len(BAND_ROWS)),
+                             squeeze=False)
     widths = {}
-    for ax, (k, d) in zip(axes[0], done.items()):
+    for col, (k, d) in enumerate(done.items()):
         history = os.path.join(d, "out", "history.h5")
-        x, g, width, angle, _ = inplane_band(history, BAND_ROWS, INCLINED)
-        _, _, width_all, angle_all, _ = inplane_band(history, BAND_ROWS)
-        widths[k] = width
-        print(f"| {k} | {1e3 * width:.1f} | {angle:.0f} | {1e3 * width_all:.1f} | {angle_all:.0f} | {g.max():.4f} |")
-        sc = ax.scatter(1e3 * x[:, 0], 1e3 * x[:, 1], c=g, s=3000 / len(x), marker="s", cmap="viridis")
-        ax.set_title(f"{k}\nwidth {1e3 * width:.1f} mm", fontsize=7)
-        ax.set_aspect("equal")
-        ax.set_xlim(0, 40)
-        ax.set_ylim(0, 80)
-        ax.tick_params(labelsize=6)
-        fig.colorbar(sc, ax=ax, shrink=0.6).ax.tick_params(labelsize=6)
-    fig.suptitle("in-plane shear strain increment, last 1 % of axial strain (x, y in mm)", fontsize=8)
+        bands = [inplane_band(history, rows, INCLINED) for rows in BAND_ROWS]
+        _, _, width_all, angle_all, _ = inplane_band(history, BAND_ROWS[0])
+        widths[k] = [b[2] for b in bands]
+        print(f"| {k} | {1e3 * bands[0][2]:.1f} | {bands[0][3]:.0f} | {1e3 * bands[1][2]:.1f} | {bands[1][3]:.0f} | "
+              f"{1e3 * width_all:.1f} | {angle_all:.0f} | {bands[0][1].max():.4f} |")
+        for ax, rows, (x, g, width, _, _) in zip(axes[:, col], BAND_ROWS, bands):
+            sc = ax.scatter(1e3 * x[:, 0], 1e3 * x[:, 1], c=g, s=3000 / len(x), marker="s", cmap="viridis")
+            ax.set_title(f"{k}\nlast {rows / 4:g} %: width {1e3 * width:.1f} mm", fontsize=7)
+            ax.set_aspect("equal")
+            ax.set_xlim(0, 40)
+            ax.set_ylim(0, 80)
+            ax.tick_params(labelsize=6)
+            fig.colorbar(sc, ax=ax, shrink=0.6).ax.tick_params(labelsize=6)
+    fig.suptitle("in-plane shear strain increment over the last 1 % (top) and 4 % (bottom) of axial strain "
+                 "(x, y in mm)", fontsize=8)
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     have = [(r, k) for r, k in RADII if k in widths]
     if have:
-        print("\n## band width against R (inclined, last 1 %)")
-        print("| case | R (mm) | band width (mm) | width / R |")
-        print("|---|---|---|---|")
+        print("\n## band width against R (inclined)")
+        print("| case | R (mm) | last 1 % (mm) | width / R | last 4 % (mm) | width / R |")
+        print("|---|---|---|---|---|---|")
         for r, k in have:
-            print(f"| {k} | {r:g} | {1e3 * widths[k]:.1f} | {1e3 * widths[k] / r:.2f} |")
+            w1, w4 = (1e3 * w for w in widths[k])
+            print(f"| {k} | {r:g} | {w1:.1f} | {w1 / r:.2f} | {w4:.1f} | {w4 / r:.2f} |")
 
 
 def print_cost(done):

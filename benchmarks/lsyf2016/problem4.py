@@ -2,11 +2,12 @@
 """[LSYF] problem 4 (issue 37): plane-strain biaxial compression, local
 against nonlocal on three meshes each (FAMILIES; the spreads tabled: SPREADS). Reads
 RESULTS/problem4_{local,R11.8,R11.8_le5,R11.8_le1}_MESH/, the single local elastic runs
-problem4_R*_le{50,1}_*/ and problem4_2x4_rate{4,1}/ (run.sh problem4), prints the tables of the
+problem4_R*_le{50,2,1,0.5}_*/ and problem4_2x4_rate{4,1}/ (run.sh problem4), prints the tables of the
 README and writes into RESULTS:
   problem4_curves.png   stress ratio against axial strain, every case
-  problem4_bands.png    the in-plane shear strain increment from 5 to 6 %
-                        at each IP (one-point elements: the element centres)
+  problem4_bands.png    the in-plane shear strain increment over the last 1 %
+                        (top row) and 4 % (bottom row) at each IP (one-point
+                        elements: the element centres)
   problem4.csv          per case and row: axial strain, sigma_a, ratio
 
 The specimen's stress ratio is the platens': sigma_a = |top force| / (W D)
@@ -58,13 +59,19 @@ SPREADS = [("local", ["4x8", "6x12", "8x16"]), ("nonlocal R = 11.8 mm", ["4x8", 
 LOCAL_ELASTIC = {"local elastic 50 MPa, R = 11.8 mm 8x16": "problem4_R11.8_le50_8x16",
                  "local elastic 50 MPa, R = 20 mm 4x8": "problem4_R20_le50_4x8",
                  "local elastic 1 MPa, R = 8 mm 10x20": "problem4_R8_le1_10x20",
-                 "local elastic 1 MPa, R = 16 mm 10x20": "problem4_R16_le1_10x20"}
+                 "local elastic 1 MPa, R = 16 mm 10x20": "problem4_R16_le1_10x20",
+                 "local elastic 2 MPa, R = 11.8 mm 10x20": "problem4_R11.8_le2_10x20",
+                 "local elastic 0.5 MPa, R = 11.8 mm 10x20": "problem4_R11.8_le0.5_10x20"}
 # the band width against R: (R in mm, case) at C_e of E = 1 MPa on the finest mesh (4 mm elements)
 RADII = [(8.0, "local elastic 1 MPa, R = 8 mm 10x20"), (11.8, "local elastic 1 MPa, R = 11.8 mm 10x20"),
          (16.0, "local elastic 1 MPa, R = 16 mm 10x20")]
+# the band width against C_e: (E in MPa, case) at R = 11.8 mm on the finest mesh
+MODULI = [(0.5, "local elastic 0.5 MPa, R = 11.8 mm 10x20"), (1.0, "local elastic 1 MPa, R = 11.8 mm 10x20"),
+          (2.0, "local elastic 2 MPa, R = 11.8 mm 10x20"), (5.0, "local elastic 5 MPa, R = 11.8 mm 10x20")]
 # the band of the increment over the last rows: 4 (1 % of axial strain, the band as it is at the end)
 # and 16 (4 %, from 2 %: past every run's peak, the band that carried the softening)
 BAND_ROWS = (4, 16)
+NU_E = 0.2  # C_e's Poisson ratio in every run (run.sh local_elastic)
 INCLINED = bw.INCLINED  # the band directions searched (band_width.py)
 
 
@@ -185,7 +192,7 @@ def print_softening(curves, done):
     if moduli:
         print()
         for E in (50e6, 5e6, 1e6):
-            mu = E / (2 * 1.2)  # nu = 0.2
+            mu = E / (2 * (1 + NU_E))
             print(f"- C_e of E = {E / 1e6:g} MPa: shear modulus {mu / 1e6:.3g} MPa, "
                   f"{mu / max(moduli):.1f}-{mu / min(moduli):.1f} times H_s")
 
@@ -241,6 +248,14 @@ def print_bands(done, path):
         for r, k in have:
             w1, w4 = (1e3 * w for w in widths[k])
             print(f"| {k} | {r:g} | {w1:.1f} | {w1 / r:.2f} | {w4:.1f} | {w4 / r:.2f} |")
+    have = [(E, k) for E, k in MODULI if k in widths]
+    if have:
+        print("\n## band width against C_e (inclined; R = 11.8 mm)")
+        print("| case | C_e's shear modulus E / (2 (1 + nu)) (MPa) | last 1 % (mm) | width / R | last 4 % (mm) | width / R |")
+        print("|---|---|---|---|---|---|")
+        for E, k in have:
+            w1, w4 = (1e3 * w for w in widths[k])
+            print(f"| {k} | {E / (2 * (1 + NU_E)):.2f} | {w1:.1f} | {w1 / 11.8:.2f} | {w4:.1f} | {w4 / 11.8:.2f} |")
 
 
 def print_cost(done):

@@ -262,12 +262,14 @@ problem4_cases=("problem4_local_4x8 4 8 0" "problem4_R11.8_4x8 4 8 0.0118" "prob
 # is the tenth, run on the three meshes whose IPs R reaches (6x12, 8x16, 10x20; on 4x8 the
 # neighbours weigh 0.002), with the local and total-strain 10x20 beside it (session 30); E = 1 MPa
 # (C_e's shear modulus about twice the band's softening in shear of the local runs) on the same
-# meshes and with R = 8 and 16 mm on 10x20, for the band against R (session 31)
+# meshes and with R = 8 and 16 mm on 10x20, for the band against R, and E = 2 and 0.5 MPa on 10x20
+# for the band against C_e (session 31)
 problem4_le_cases=("problem4_R11.8_le50_8x16 8 16 0.0118 5e7" "problem4_R20_le50_4x8 4 8 0.02 5e7"
                    "problem4_R11.8_le5_8x16 8 16 0.0118 5e6" "problem4_R11.8_le5_6x12 6 12 0.0118 5e6"
                    "problem4_R11.8_le5_10x20 10 20 0.0118 5e6" "problem4_R11.8_le1_8x16 8 16 0.0118 1e6"
                    "problem4_R11.8_le1_6x12 6 12 0.0118 1e6" "problem4_R11.8_le1_10x20 10 20 0.0118 1e6"
-                   "problem4_R8_le1_10x20 10 20 0.008 1e6" "problem4_R16_le1_10x20 10 20 0.016 1e6")
+                   "problem4_R8_le1_10x20 10 20 0.008 1e6" "problem4_R16_le1_10x20 10 20 0.016 1e6"
+                   "problem4_R11.8_le2_10x20 10 20 0.0118 2e6" "problem4_R11.8_le0.5_10x20 10 20 0.0118 5e5")
 # local_elastic E: the sed expression, after the radius is set, of the local elastic formulation with
 # C_e of Young's modulus E (Pa) and nu = 0.2 (README, problems 3 and 4): E = 5.84e8 is
 # [LSYF]'s effective elastic modulus (physics.md 3.2; P-wave modulus 649 MPa against the measured

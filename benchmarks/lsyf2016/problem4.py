@@ -240,22 +240,23 @@ def print_bands(done, path):
                  "(x, y in mm)", fontsize=8)
     fig.tight_layout()
     fig.savefig(path, dpi=120)
-    have = [(r, k) for r, k in RADII if k in widths]
-    if have:
-        print("\n## band width against R (inclined)")
-        print("| case | R (mm) | last 1 % (mm) | width / R | last 4 % (mm) | width / R |")
-        print("|---|---|---|---|---|---|")
-        for r, k in have:
-            w1, w4 = (1e3 * w for w in widths[k])
-            print(f"| {k} | {r:g} | {w1:.1f} | {w1 / r:.2f} | {w4:.1f} | {w4 / r:.2f} |")
-    have = [(E, k) for E, k in MODULI if k in widths]
-    if have:
-        print("\n## band width against C_e (inclined; R = 11.8 mm)")
-        print("| case | C_e's shear modulus E / (2 (1 + nu)) (MPa) | last 1 % (mm) | width / R | last 4 % (mm) | width / R |")
-        print("|---|---|---|---|---|---|")
-        for E, k in have:
-            w1, w4 = (1e3 * w for w in widths[k])
-            print(f"| {k} | {E / (2 * (1 + NU_E)):.2f} | {w1:.1f} | {w1 / 11.8:.2f} | {w4:.1f} | {w4 / 11.8:.2f} |")
+    print_width_series("band width against R (inclined)", "R (mm)",
+                       [(k, f"{r:g}", r) for r, k in RADII if k in widths], widths)
+    print_width_series("band width against C_e (inclined; R = 11.8 mm)",
+                       "C_e's shear modulus E / (2 (1 + nu)) (MPa)",
+                       [(k, f"{E / (2 * (1 + NU_E)):.2f}", 11.8) for E, k in MODULI if k in widths], widths)
+
+
+def print_width_series(title, column, rows, widths):
+    """A table of the band widths (last 1 and 4 %) of `rows`: (case, the varied value, R in mm)."""
+    if not rows:
+        return
+    print(f"\n## {title}")
+    print(f"| case | {column} | last 1 % (mm) | width / R | last 4 % (mm) | width / R |")
+    print("|---|---|---|---|---|---|")
+    for k, value, r in rows:
+        w1, w4 = (1e3 * w for w in widths[k])
+        print(f"| {k} | {value} | {w1:.1f} | {w1 / r:.2f} | {w4:.1f} | {w4 / r:.2f} |")
 
 
 def print_cost(done):

@@ -156,10 +156,10 @@ def main():
                 a, b = base.format(m) + coarse, base.format(m) + fine
                 if not (curves.get(a) and curves.get(b)):
                     continue
-                diffs = []
+                diffs, fine_strain = [], np.array(curves[b]["axial_strain"])
                 for e, r in zip(curves[a]["axial_strain"], curves[a]["stress_ratio"]):
-                    k = int(np.argmin(np.abs(np.array(curves[b]["axial_strain"]) - e)))
-                    if e >= 0.05 - 1e-9 and abs(curves[b]["axial_strain"][k] - e) < 1e-4:
+                    k = int(np.argmin(np.abs(fine_strain - e)))
+                    if e >= 0.05 - 1e-9 and abs(fine_strain[k] - e) < 1e-4:
                         diffs.append((abs(curves[b]["stress_ratio"][k] - r) / r, e))
                 worst = max(diffs)
                 print(f"| {base.format(m)} | {STEP_SUFFIXES[fine]} | {STEP_SUFFIXES[coarse]} | {100 * worst[0]:.1f} % "

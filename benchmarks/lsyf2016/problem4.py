@@ -65,13 +65,13 @@ LOCAL_ELASTIC = {"local elastic 50 MPa, R = 11.8 mm 8x16": "problem4_R11.8_le50_
 # the band width against R: (R in mm, case) at C_e of E = 1 MPa on the finest mesh (4 mm elements)
 RADII = [(8.0, "local elastic 1 MPa, R = 8 mm 10x20"), (11.8, "local elastic 1 MPa, R = 11.8 mm 10x20"),
          (16.0, "local elastic 1 MPa, R = 16 mm 10x20")]
-# the band width against C_e: (E in MPa, case) at R = 11.8 mm on the finest mesh
-MODULI = [(0.5, "local elastic 0.5 MPa, R = 11.8 mm 10x20"), (1.0, "local elastic 1 MPa, R = 11.8 mm 10x20"),
-          (2.0, "local elastic 2 MPa, R = 11.8 mm 10x20"), (5.0, "local elastic 5 MPa, R = 11.8 mm 10x20")]
+# the band width against C_e (each run's C_e read from its macro.prm) at R = 11.8 mm on the finest mesh
+MODULI = ["local elastic 0.5 MPa, R = 11.8 mm 10x20", "local elastic 1 MPa, R = 11.8 mm 10x20",
+          "local elastic 2 MPa, R = 11.8 mm 10x20", "local elastic 5 MPa, R = 11.8 mm 10x20"]
 # the band of the increment over the last rows: 4 (1 % of axial strain, the band as it is at the end)
 # and 16 (4 %, from 2 %: past every run's peak, the band that carried the softening)
 BAND_ROWS = (4, 16)
-NU_E = 0.2  # C_e's Poisson ratio in every run (run.sh local_elastic)
+NU_E = 0.2  # C_e's Poisson ratio in every run (run.sh local_elastic), for the moduli not run
 INCLINED = bw.INCLINED  # the band directions searched (band_width.py)
 
 
@@ -124,6 +124,11 @@ def ratio_table(curves, names, every):
         print(f"| {100 * curves[names[0]][0][min(k, len(curves[names[0]][0]) - 1)]:.2f} % | " + " | ".join(cells) + " |")
 
 
+def shear_modulus(E, nu):
+    """The shear modulus of an isotropic law of Young's modulus E and Poisson ratio nu."""
+    return E / (2 * (1 + nu))
+
+
 def local_elastic_law(case_dir):
     """(lambda, mu) of C_e from the run's macro.prm, None for the total-strain or local runs."""
     entries = dict(line.strip()[4:].split(" = ", 1) for line in open(os.path.join(case_dir, "macro.prm"))
@@ -131,7 +136,7 @@ def local_elastic_law(case_dir):
     if entries.get("Formulation") != "local elastic":
         return None
     E, nu = float(entries["Local elastic modulus"]), float(entries["Local Poisson ratio"])
-    return E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
+    return E * nu / ((1 + nu) * (1 - 2 * nu)), shear_modulus(E, nu)
 
 
 def stress_parts(case_dir, row):
@@ -192,7 +197,7 @@ def print_softening(curves, done):
     if moduli:
         print()
         for E in (50e6, 5e6, 1e6):
-            mu = E / (2 * (1 + NU_E))
+            mu = shear_modulus(E, NU_E)
             print(f"- C_e of E = {E / 1e6:g} MPa: shear modulus {mu / 1e6:.3g} MPa, "
                   f"{mu / max(moduli):.1f}-{mu / min(moduli):.1f} times H_s")
 
@@ -244,7 +249,8 @@ def print_bands(done, path):
                        [(k, f"{r:g}", r) for r, k in RADII if k in widths], widths)
     print_width_series("band width against C_e (inclined; R = 11.8 mm)",
                        "C_e's shear modulus E / (2 (1 + nu)) (MPa)",
-                       [(k, f"{E / (2 * (1 + NU_E)):.2f}", 11.8) for E, k in MODULI if k in widths], widths)
+                       [(k, f"{local_elastic_law(done[k])[1] / 1e6:.2f}", 11.8) for k in MODULI if k in widths],
+                       widths)
 
 
 def print_width_series(title, column, rows, widths):

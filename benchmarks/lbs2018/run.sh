@@ -200,4 +200,9 @@ for c in "${dns[@]}"; do
   if [[ $running -ge $(nproc) ]]; then wait -n; running=$((running - 1)); fi
 done
 wait
-/usr/bin/python3 "$here/analyse.py" "$here/$base"
+# analyse.py reads the study's own cases (all_cases) and rewrites results/ from what runs/ holds;
+# other cases (nonlocal_*, *_quarter, ...) have their scripts (nonlocal_study.py, band_study.py)
+for c in "${cases[@]}"; do
+  if [[ " ${all_cases[*]} " == *" $c "* ]]; then /usr/bin/python3 "$here/analyse.py" "$here/$base"; exit; fi
+done
+echo "run.sh: none of these cases is analyse.py's: results/ left as it is (nonlocal_study.py, band_study.py read them)"

@@ -26,7 +26,7 @@ results/band_study.png, and prints the README's tables.
   of the IPs' mean stress, gamma_band the largest IP shear strain increment
   from the peak to the end: against C_e's shear modulus it predicts the
   band's width on the softening bar (ctest macro_nonlocal_softening_bar:
-  about R at mu_e / H_s = 2, 2R at 9).
+  1.1 R at C_e / H = 2.7, 2.1 R at 9).
 """
 import csv
 import os

@@ -201,7 +201,7 @@ for c in "${dns[@]}"; do
 done
 wait
 # analyse.py reads the study's own cases (all_cases) and rewrites results/ from what runs/ holds;
-# other cases (nonlocal_*, *_quarter, ...) have their scripts (nonlocal_study.py, band_study.py)
+# other cases (*_le*, *_op*, *_quarter, ...) have their scripts (nonlocal_study.py, band_study.py)
 for c in "${cases[@]}"; do
   if [[ " ${all_cases[*]} " == *" $c "* ]]; then /usr/bin/python3 "$here/analyse.py" "$here/$base"; exit; fi
 done

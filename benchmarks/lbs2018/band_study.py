@@ -76,25 +76,22 @@ def rows_at(history, strains):
 def stage2(case):
     """(axial strain, stress ratio, tau) of the IPs' mean stress in stage 2 (summary.csv)."""
     rows = [r for r in csv.DictReader(open(os.path.join(runs, case, "summary.csv"))) if r["stage"] == "2"]
-    s11 = np.abs([float(r["sigma11_mean"]) for r in rows])
-    s22 = np.abs([float(r["sigma22_mean"]) for r in rows])
-    return np.array([float(r["axial_strain"]) for r in rows]), (s22 - s11) / (s22 + s11), (s22 - s11) / 2
+    s11 = np.array([float(r["sigma11_mean"]) for r in rows])
+    s22 = np.array([float(r["sigma22_mean"]) for r in rows])
+    return np.array([float(r["axial_strain"]) for r in rows]), analyse.ratio(s11, s22), np.abs(s11 - s22) / 2
 
 
-def band(case, start, end, angles):
-    """(points, gamma, width, angle) of the band of F's increment from `start` to `end` axial strain."""
+def increment(case, start, end):
+    """(points, gamma) of F's shear strain increment from `start` to `end` axial strain."""
     history = os.path.join(runs, case, "history.h5")
-    pts, g = bw.ip_field(history, *rows_at(history, (start, end)))
-    width, angle, _ = bw.band_width(pts, g, band_angles=angles)
-    return pts, g, width, angle
+    return bw.ip_field(history, *rows_at(history, (start, end)))
 
 
 def softening_modulus(case):
     """(peak strain, tau peak, tau end, gamma in the band, H_s) from the peak of the ratio to the end."""
     eps, ratio, tau = stage2(case)
     k = int(np.argmax(ratio))
-    history = os.path.join(runs, case, "history.h5")
-    _, g = bw.ip_field(history, *rows_at(history, (eps[k], eps[-1])))
+    _, g = increment(case, eps[k], eps[-1])
     return eps[k], tau[k], tau[-1], g.max(), (tau[k] - tau[-1]) / g.max()
 
 
@@ -121,8 +118,9 @@ def main():
             eps, ratio, _ = stage2(c)
             cells = []
             for a, b in INTERVALS:
+                pts, g = increment(c, a, b)
                 for name, angles in (("inclined", bw.INCLINED), ("all", range(180))):
-                    pts, g, w, ang = band(c, a, b, angles)
+                    w, ang, _ = bw.band_width(pts, g, band_angles=angles)
                     fh.write(f"{c},{fam},{m},{h:g},{a:g},{b:g},{name},{1e3 * w:.4g},{ang:.0f}\n")
                     cells.append(f"{width_text(w)} at {ang:.0f} deg")
                     if (a, b, name) == (*INTERVALS[-1], "inclined"):

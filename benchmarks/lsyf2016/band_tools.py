@@ -29,6 +29,17 @@ def inplane_band(history, rows, band_angles=range(180)):
     return x, gamma, width, angle, centres[int(np.argmax(means))]
 
 
+def band_softening(history, tau):
+    """(peak row, gamma_band, H_s): the band's softening modulus in shear H_s = (tau_peak - tau_end) /
+    gamma_band of the run in `history`, tau a shear stress per row of history.h5 and gamma_band the
+    largest IP shear strain increment from the peak row to the last (inplane_band). Against C_e's
+    shear modulus it predicts the band's width in R on the softening bar (ctest
+    macro_nonlocal_softening_bar: 1.1 R at C_e / H = 2.7, 2.1 R at 9)."""
+    peak = int(np.argmax(tau))
+    _, gamma, _, _, _ = inplane_band(history, len(tau) - 1 - peak)
+    return peak, gamma.max(), (tau[peak] - tau[-1]) / gamma.max()
+
+
 def plot_curves(curves, xlabel, ylabel, path, dashed=lambda label: False):
     """One line per {label: (strain, value)}, strain in per cent on the axis; lines past the
     tenth colour dotted (the colour cycle repeats)."""

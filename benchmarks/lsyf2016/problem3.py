@@ -25,6 +25,7 @@ Usage: problem3.py RESULTS   (Debian's python3 with numpy, h5py, matplotlib)
 """
 import csv
 import os
+import re
 import sys
 
 import h5py
@@ -33,11 +34,24 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from band_tools import inplane_band, plot_curves  # noqa: E402
+from band_tools import band_softening, inplane_band, plot_curves  # noqa: E402
 
 CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "problem3_R0.025",
          "R = 25 mm, local elastic 584 MPa": "problem3_R0.025_le584",
-         "R = 25 mm, local elastic 50 MPa": "problem3_R0.025_le50"}
+         "R = 25 mm, local elastic 50 MPa": "problem3_R0.025_le50",
+         "R = 15 mm, local elastic 0.5 MPa": "problem3_R0.015_le0.5",
+         "R = 20 mm, local elastic 0.5 MPa": "problem3_R0.02_le0.5",
+         "R = 25 mm, local elastic 0.5 MPa": "problem3_R0.025_le0.5",
+         "local, 24x10": "problem3_R0_24x10",
+         "R = 11.8 mm, local elastic 0.5 MPa, 24x10": "problem3_R0.0118_le0.5_24x10"}
+# the band width against R and the mesh: (R in mm, element height in mm, case); C_e of E = 0.5 MPa
+RADII = [(0.0, 10.1, "local"), (15.0, 10.1, "R = 15 mm, local elastic 0.5 MPa"),
+         (20.0, 10.1, "R = 20 mm, local elastic 0.5 MPa"), (25.0, 10.1, "R = 25 mm, local elastic 0.5 MPa"),
+         (0.0, 5.06, "local, 24x10"), (11.8, 5.06, "R = 11.8 mm, local elastic 0.5 MPa, 24x10")]
+# the band's directions in simple shear: along the shear, within 20 degrees of x (the local runs' band
+# is at 4 degrees); among all directions the finder can return a hot spot around the weak RVE
+ALONG_X = list(range(0, 21)) + list(range(160, 180))
+NU_E = 0.2  # C_e's Poisson ratio (run.sh local_elastic)
 WEAK_POINT = np.array([0.054, 0.025])  # problem3.prm, subsection Imperfection
 HEIGHT, SHEAR = 0.0506, 0.08           # the top's displacement is SHEAR * HEIGHT at the end
 BAND_ROWS = 4
@@ -61,9 +75,14 @@ def curve(d):
     return np.concatenate([[0.0], d["gamma_macro"]]), np.concatenate([[0.0], np.abs(s[:, 1]) / p])
 
 
+def weak_ip(d):
+    """The index of the weakened RVE's IP (the one nearest WEAK_POINT, as fe2dem chooses it)."""
+    return int(np.argmin(np.linalg.norm(d["ip_position"][:, :2] - WEAK_POINT, axis=1)))
+
+
 def ip_map(fig, ax, x, values, weak, title, cmap, weak_marker):
     """One panel: @p values at the IPs @p x (element centres, m) over the specimen, the weak IP marked."""
-    sc = ax.scatter(1e3 * x[:, 0], 1e3 * x[:, 1], c=values, s=160, marker="s", cmap=cmap)
+    sc = ax.scatter(1e3 * x[:, 0], 1e3 * x[:, 1], c=values, s=9600 / len(x), marker="s", cmap=cmap)
     ax.plot(1e3 * x[weak, 0], 1e3 * x[weak, 1], weak_marker)
     ax.set_title(title, fontsize=8)
     ax.set_aspect("equal")
@@ -72,16 +91,39 @@ def ip_map(fig, ax, x, values, weak, title, cmap, weak_marker):
     fig.colorbar(sc, ax=ax, shrink=0.8)
 
 
-def plot_rotation(cases, weak, path):
+def plot_rotation(cases, path):
     """The mean particle rotation at the end at each IP, one panel per case."""
     if not cases:
         return
     fig, axes = plt.subplots(len(cases), 1, figsize=(7, 2.2 * len(cases)), squeeze=False)
     for ax, (k, d) in zip(axes[:, 0], cases.items()):
-        ip_map(fig, ax, d["ip_position"], d["mean_rotation"][-1], weak,
+        ip_map(fig, ax, d["ip_position"], d["mean_rotation"][-1], weak_ip(d),
                f"{k}: mean particle rotation at the end (rad; x: the weak RVE)", "magma", "cx")
     fig.tight_layout()
     fig.savefig(path, dpi=110)
+
+
+def print_softening(results, done):
+    """The band's softening modulus in shear of the runs without C_e (band_tools.band_softening, tau
+    = |sigma_12| of the mean stress) against C_e's shear modulus of the local elastic runs."""
+    print("\n## the band's softening modulus in shear, H_s, against C_e's shear modulus")
+    print("| case | peak at (shear) | tau peak -> end (kPa) | gamma in the band | H_s (MPa) |")
+    print("|---|---|---|---|---|")
+    moduli = []
+    for k in ("local", "R = 15 mm"):
+        if k not in done:
+            continue
+        tau = np.abs(done[k]["sigma"].mean(axis=1)[:, 1])
+        peak, gamma, h_s = band_softening(os.path.join(results, CASES[k], "out", "history.h5"), tau)
+        moduli.append(h_s)
+        print(f"| {k} | {100 * done[k]['gamma_macro'][peak]:.1f} % | {tau[peak] / 1e3:.0f} -> {tau[-1] / 1e3:.0f} | "
+              f"{gamma:.3f} | {h_s / 1e6:.3f} |")
+    if moduli:
+        print()
+        for E in (5.84e8, 5e7, 5e5):
+            mu = E / (2 * (1 + NU_E))
+            print(f"- C_e of E = {E / 1e6:g} MPa: shear modulus {mu / 1e6:.3g} MPa, "
+                  f"{mu / max(moduli):.1f}-{mu / min(moduli):.1f} times H_s")
 
 
 def main():
@@ -92,7 +134,6 @@ def main():
             if os.path.exists(os.path.join(results, c, "wall_s"))}
     if not done:
         sys.exit("problem3.py: no finished run in " + results)
-    weak = int(np.argmin(np.linalg.norm(next(iter(done.values()))["ip_position"][:, :2] - WEAK_POINT, axis=1)))
 
     print("## tau/p of the mean stress, every 1 % of shear")
     print("| shear strain | " + " | ".join(done) + " |")
@@ -103,15 +144,20 @@ def main():
         print(f"| {100 * g0[k]:.0f} % | " + " | ".join(f"{c[1][k]:.3f}" if k < len(c[1]) else "-"
                                                    for c in curves.values()) + " |")
 
+    print_softening(results, done)
+
     print(f"\n## the band (increment over the last {BAND_ROWS} rows), and inside against outside at the end")
-    print("| case | band width (mm) | angle (deg from x) | band middle y (mm) | weak IP in the band | porosity in / out "
+    print("| case | band width (mm) | angle (deg from x) | band middle y (mm) | along x: width (mm) | angle "
+          "| weak IP in the band | porosity in / out "
           "| coordination in / out | sliding fraction in / out | mean rotation (rad) in / out |")
-    print("|---|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     fig, axes = plt.subplots(len(done), 1, figsize=(7, 2.2 * len(done)), squeeze=False)
-    rows = []
+    rows, widths = [], {}
     for ax, (k, d) in zip(axes[:, 0], done.items()):
-        x, gamma, width, angle, middle = inplane_band(os.path.join(results, CASES[k], "out", "history.h5"),
-                                                      BAND_ROWS)
+        history, weak = os.path.join(results, CASES[k], "out", "history.h5"), weak_ip(d)
+        x, gamma, width, angle, middle = inplane_band(history, BAND_ROWS)
+        _, _, width_x, angle_x, _ = inplane_band(history, BAND_ROWS, ALONG_X)
+        widths[k] = width_x
         inside = gamma > 0.5 * gamma.max()
         porosity = 1.0 - d["packing_fraction"][-1]
         coordination = d["coordination"][-1]
@@ -121,19 +167,29 @@ def main():
         def in_out(v):
             return "-" if np.isnan(v).all() else f"{v[inside].mean():.3f} / {v[~inside].mean():.3f}"
 
-        print(f"| {k} | {1e3 * width:.1f} | {angle:.0f} | {1e3 * middle:.1f} | {'yes' if inside[weak] else 'no'} | "
+        print(f"| {k} | {1e3 * width:.1f} | {angle:.0f} | {1e3 * middle:.1f} | {1e3 * width_x:.1f} | {angle_x:.0f} | "
+              f"{'yes' if inside[weak] else 'no'} | "
               f"{in_out(porosity)} | {in_out(coordination)} | {in_out(sliding)} | {in_out(rotation)} |")
         rows += [[k, f"{x[i, 0]:.5f}", f"{x[i, 1]:.5f}", int(inside[i]), f"{porosity[i]:.4f}",
                   f"{coordination[i]:.3f}", f"{sliding[i]:.3f}", f"{rotation[i]:.4f}"] for i in range(len(x))]
         ip_map(fig, ax, x, gamma, weak, f"{k}: band width {1e3 * width:.1f} mm (x: the weak RVE)", "viridis", "rx")
     fig.tight_layout()
     fig.savefig(os.path.join(results, "problem3_bands.png"), dpi=110)
-    plot_rotation({k: d for k, d in done.items() if d["mean_rotation"] is not None}, weak,
+    plot_rotation({k: d for k, d in done.items() if d["mean_rotation"] is not None},
                   os.path.join(results, "problem3_rotation.png"))
     with open(os.path.join(results, "problem3.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["case", "x", "y", "in_band", "porosity", "coordination", "sliding_fraction", "mean_rotation"])
         w.writerows(rows)
+
+    radii = [(r, h, k) for r, h, k in RADII if k in widths]
+    if radii:
+        print("\n## band width (along x) against R and the element (local elastic: C_e of E = 0.5 MPa)")
+        print("| case | R (mm) | element height (mm) | band width (mm) | width / R | width / element |")
+        print("|---|---|---|---|---|---|")
+        for r, h, k in radii:
+            w = 1e3 * widths[k]
+            print(f"| {k} | {r:g} | {h:g} | {w:.1f} | {w / r if r else float('nan'):.2f} | {w / h:.2f} |")
 
     # the soft mode of the total-strain average (user guide, 'Nonlocal operator'): the elements' own
     # signed shear increment, the weak one against the rest
@@ -144,18 +200,19 @@ def main():
         F = d["F"].reshape(len(d["step"]), -1, 3, 3)
         dF = F[-1] - F[-1 - BAND_ROWS]
         g = dF[:, 0, 1] + dF[:, 1, 0]
-        print(f"| {k} | {g[weak]:.4f} | {g.mean():.4f} | {g.max():.4f} | {g.min():.4f} "
+        print(f"| {k} | {g[weak_ip(d)]:.4f} | {g.mean():.4f} | {g.max():.4f} | {g.min():.4f} "
               f"| {int((g < 0).sum())} of {len(g)} |")
 
-    print("\n## cost (one rank each on the 2-core VM, walls shared with other runs)")
-    print("| case | wall (s) | RVEs | DEM steps (all RVEs) |")
-    print("|---|---|---|---|")
+    print("\n## cost (on the 2-core VM, walls shared with other runs)")
+    print("| case | ranks | wall (s) | RVEs | DEM steps (all RVEs) |")
+    print("|---|---|---|---|---|")
     for k, c in CASES.items():
         if k in done:
             with open(os.path.join(results, c, "out", "summary.csv")) as f:
                 dem = sum(int(r["dem_steps"]) for r in csv.DictReader(f))
             wall = float(open(os.path.join(results, c, "wall_s")).read())
-            print(f"| {k} | {wall:.0f} | {len(done[k]['ip_position'])} | {dem:.3g} |")
+            ranks = re.search(r"RVEs on (\d+) rank", open(os.path.join(results, c, "log")).read()).group(1)
+            print(f"| {k} | {ranks} | {wall:.0f} | {len(done[k]['ip_position'])} | {dem:.3g} |")
 
     plot_curves(curves, "shear strain (%)", "tau/p of the mean stress", os.path.join(results, "problem3_curves.png"))
     return 0

@@ -43,6 +43,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+import band_tools  # noqa: E402
 from band_tools import bw, inplane_band, plot_curves  # noqa: E402
 
 WIDTH, DEPTH, P_CONFINING = 0.04, 0.005, 4.16e5
@@ -158,10 +159,9 @@ def band_softening(curves, case_dir, k):
     """(peak strain, tau_peak, tau_end, gamma_band, H_s) of case `k`: the band's softening modulus in
     shear from the platens' peak to the end (module docstring)."""
     e, s, _ = curves[k]
-    peak = int(np.argmax(s))
-    _, gamma, _, _, _ = inplane_band(os.path.join(case_dir, "out", "history.h5"), len(s) - 1 - peak)
     tau = (s - P_CONFINING) / 2
-    return e[peak], tau[peak], tau[-1], gamma.max(), (tau[peak] - tau[-1]) / gamma.max()
+    peak, gamma, h_s = band_tools.band_softening(os.path.join(case_dir, "out", "history.h5"), tau[1:])
+    return e[peak + 1], tau[peak + 1], tau[-1], gamma, h_s
 
 
 def print_spreads(curves):

@@ -35,7 +35,9 @@
 #   problem3   problem 3 (issue 37): simple shear of 118 x 50.6 x 12.7 mm on
 #              12x5x1 one-point elements with lsyf_300 RVEs, one of them
 #              lsyf_300_weak (problem3.prm), local and nonlocal with R = 15
-#              and 25 mm, one rank each; problem3.py's tables and PNGs
+#              and 25 mm, the local elastic formulation with R = 15-25 mm;
+#              24x10x1 local and local elastic (R = 11.8 mm); 2 ranks
+#              each; problem3.py's tables and PNGs
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
 #   problem3 --full, problem4 --full, all --full   the same cases at the
@@ -300,7 +302,20 @@ problem4() {
   done
   problem4_table
 }
-problem3_radii=(0 0.015 0.025)
+# Problem 3's cases: NAME CELLS_X CELLS_Y RADIUS [E]; with E, the local elastic formulation with C_e
+# of Young's modulus E (local_elastic). On [LSYF]'s 12x5 mesh: local, R = 15 and 25 mm (total
+# strain), and E = 5.84e8 and 5e7 Pa (session 29), which held every element to one strain, no band;
+# E = 5e5 Pa (session 33): C_e's shear modulus 2.6-3.1 times the band's softening in shear of the
+# local and R = 15 mm runs (H_s = 0.068-0.081 MPa, problem3.py), the ratio of problem 4's band about
+# R wide, with R = 15, 20, 25 mm; and on 24x10 (5 mm elements, which R = 11.8 mm reaches, as in
+# problem 4) local and E = 5e5 Pa, for the band against the mesh and R
+problem3_cases=("problem3_R0 12 5 0" "problem3_R0.015 12 5 0.015" "problem3_R0.025 12 5 0.025"
+                "problem3_R0.025_le584 12 5 0.025 5.84e8" "problem3_R0.025_le50 12 5 0.025 5e7"
+                "problem3_R0.015_le0.5 12 5 0.015 5e5" "problem3_R0.02_le0.5 12 5 0.02 5e5"
+                "problem3_R0.025_le0.5 12 5 0.025 5e5" "problem3_R0_24x10 24 10 0"
+                "problem3_R0.0118_le0.5_24x10 24 10 0.0118 5e5")
+# problem3_edit CELLS_X CELLS_Y RADIUS [E]: problem3.prm's substitutions
+problem3_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; ${4:+$(local_elastic "$4")}"; }
 # submit_full NAME PRM [sed expression]: the case at the paper's size (lsyf_4096) in
 # results/full/NAME/ as a SLURM job of 16 ranks, or its sbatch command printed
 submit_full() {
@@ -315,10 +330,11 @@ submit_full() {
 problem3_full() {
   [[ -f "$results/full/lsyf_4096_weak.rve.data" ]] || { mkdir -p "$results/full"
     $py "$root/rve_templates/weaken_packing.py" "$root/rve_templates/packings/lsyf_4096" "$results/full/lsyf_4096_weak" 25; }
-  local r
-  for r in "${problem3_radii[@]}"; do submit_full "problem3_R$r" "$here/problem3.prm" "s/RADIUS/$r/"; done
-  submit_full problem3_R0.025_le584 "$here/problem3.prm" "s/RADIUS/0.025/; $(local_elastic 5.84e8)"
-  submit_full problem3_R0.025_le50 "$here/problem3.prm" "s/RADIUS/0.025/; $(local_elastic 5e7)"
+  local c name x y radius modulus
+  for c in "${problem3_cases[@]}"; do
+    read -r name x y radius modulus <<< "$c"
+    submit_full "$name" "$here/problem3.prm" "$(problem3_edit "$x" "$y" "$radius" "$modulus")"
+  done
 }
 problem4_full() {
   local c name x y radius
@@ -332,12 +348,11 @@ problem4_full() {
   done
 }
 problem3() {
-  local r
-  for r in "${problem3_radii[@]}"; do
-    run_macro "problem3_R$r" "$here/problem3.prm" 1 "s/RADIUS/$r/"
+  local c name x y radius modulus
+  for c in "${problem3_cases[@]}"; do
+    read -r name x y radius modulus <<< "$c"
+    run_macro "$name" "$here/problem3.prm" 2 "$(problem3_edit "$x" "$y" "$radius" "$modulus")"
   done
-  run_macro problem3_R0.025_le584 "$here/problem3.prm" 1 "s/RADIUS/0.025/; $(local_elastic 5.84e8)"
-  run_macro problem3_R0.025_le50 "$here/problem3.prm" 1 "s/RADIUS/0.025/; $(local_elastic 5e7)"
   problem3_table
 }
 problem3_table() {

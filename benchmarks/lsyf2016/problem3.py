@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """[LSYF] problem 3 (issue 37): simple shear with one weakened RVE, local
-and nonlocal. Reads RESULTS/problem3_R{0,0.015,0.025}/ (run.sh problem3),
-prints the tables of the README and writes into RESULTS:
+and nonlocal. Reads RESULTS/problem3_*/ (CASES; run.sh problem3; a run that
+stopped counts with its rows), prints the tables of the README and writes
+into RESULTS:
   problem3_curves.png  tau/p of the volume average against the shear strain
   problem3_bands.png   the in-plane shear strain increment of the last 2 %
                        of shear at each IP (element centres), the weak IP marked
@@ -13,7 +14,8 @@ prints the tables of the README and writes into RESULTS:
 
 Stresses: the mean of the IPs' Cauchy stress (equal element volumes), tau =
 |sigma_12|, p = -tr(sigma)/3. The band: benchmarks/lbs2018/band_width.py on
-the increment of F's in-plane block over the last four rows (2 % of shear);
+the increment of F's in-plane block over the last four rows (2 % of shear),
+among all directions and among those within 20 degrees of x (ALONG_X);
 inside = the IPs whose increment exceeds half the largest. Inside against
 outside: porosity 1 - solid fraction, coordination 2C/N, the fraction of
 sliding contacts, the inner particles' mean rotation (history.h5's
@@ -42,18 +44,21 @@ CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "p
          "R = 15 mm, local elastic 0.5 MPa": "problem3_R0.015_le0.5",
          "R = 20 mm, local elastic 0.5 MPa": "problem3_R0.02_le0.5",
          "R = 25 mm, local elastic 0.5 MPa": "problem3_R0.025_le0.5",
-         "local, 24x10": "problem3_R0_24x10",
-         "R = 11.8 mm, local elastic 0.5 MPa, 24x10": "problem3_R0.0118_le0.5_24x10"}
-# the band width against R and the mesh: (R in mm, element height in mm, case); C_e of E = 0.5 MPa
+         "local, 24x10 (2 us step)": "problem3_R0_24x10",
+         "local, 2 us step": "problem3_R0_dt2us", "local, 1 us step": "problem3_R0_dt1us"}
+# the band width against R and the mesh: (R in mm, element height in mm, case); C_e of E = 0.5 MPa.
+# The macro step is fe2dem's default (5 us on 12x5, 2 us on 24x10) but where the case names it
+# (run.sh problem3_step_cases; README, 'The rate, and the macro step')
 RADII = [(0.0, 10.1, "local"), (15.0, 10.1, "R = 15 mm, local elastic 0.5 MPa"),
          (20.0, 10.1, "R = 20 mm, local elastic 0.5 MPa"), (25.0, 10.1, "R = 25 mm, local elastic 0.5 MPa"),
-         (0.0, 5.06, "local, 24x10"), (11.8, 5.06, "R = 11.8 mm, local elastic 0.5 MPa, 24x10")]
+         (0.0, 5.06, "local, 24x10 (2 us step)")]
 # the band's directions in simple shear: along the shear, within 20 degrees of x (the local runs' band
 # is at 4 degrees); among all directions the finder can return a hot spot around the weak RVE
 ALONG_X = list(range(0, 21)) + list(range(160, 180))
 NU_E = 0.2  # C_e's Poisson ratio (run.sh local_elastic)
 WEAK_POINT = np.array([0.054, 0.025])  # problem3.prm, subsection Imperfection
 HEIGHT, SHEAR = 0.0506, 0.08           # the top's displacement is SHEAR * HEIGHT at the end
+LOAD_STEPS = 16                        # problem3.prm: rows at SHEAR * step / LOAD_STEPS
 BAND_ROWS = 4
 
 
@@ -63,8 +68,7 @@ def read(case_dir):
         d = {k: h[k][()] for k in ("ip_position", "sigma", "packing_fraction", "coordination", "contacts",
                                    "sliding_contacts", "step", "F")}
         d["mean_rotation"] = h["mean_rotation"][()] if "mean_rotation" in h else None
-    n_rows = len(d["step"])
-    d["gamma_macro"] = SHEAR * np.arange(1, n_rows + 1) / n_rows  # load steps are equal in time
+    d["gamma_macro"] = SHEAR * d["step"] / LOAD_STEPS  # load steps are equal in time; a stopped run has fewer
     return d
 
 
@@ -172,7 +176,8 @@ def main():
               f"{in_out(porosity)} | {in_out(coordination)} | {in_out(sliding)} | {in_out(rotation)} |")
         rows += [[k, f"{x[i, 0]:.5f}", f"{x[i, 1]:.5f}", int(inside[i]), f"{porosity[i]:.4f}",
                   f"{coordination[i]:.3f}", f"{sliding[i]:.3f}", f"{rotation[i]:.4f}"] for i in range(len(x))]
-        ip_map(fig, ax, x, gamma, weak, f"{k}: band width {1e3 * width:.1f} mm (x: the weak RVE)", "viridis", "rx")
+        ip_map(fig, ax, x, gamma, weak, f"{k}: band along x {1e3 * width_x:.1f} mm wide (x: the weak RVE)",
+               "viridis", "rx")
     fig.tight_layout()
     fig.savefig(os.path.join(results, "problem3_bands.png"), dpi=110)
     plot_rotation({k: d for k, d in done.items() if d["mean_rotation"] is not None},

@@ -36,10 +36,12 @@
 #              12x5x1 one-point elements with lsyf_300 RVEs, one of them
 #              lsyf_300_weak (problem3.prm), local and nonlocal with R = 15
 #              and 25 mm, the local elastic formulation with R = 15-25 mm;
-#              24x10x1 local and local elastic (R = 11.8 mm); 2 ranks
-#              each; problem3.py's tables and PNGs
+#              24x10x1 local, and 12x5 local at the 24x10 macro step and
+#              half of it; 2 ranks each; problem3.py's tables and PNGs
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
+#   macro_step one element at 4 /s with the macro step and the RVE's
+#              'Check interval' varied (problems 3 and 4's RVEs; macro_step.py)
 #   problem3 --full, problem4 --full, all --full   the same cases at the
 #              paper's size, lsyf_4096 RVEs (problem 3's weak one made by
 #              weaken_packing.py into results/full/), as SLURM jobs through
@@ -50,11 +52,11 @@
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
 # result exists and whose parameter file is unchanged is not run again.
 #
-#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem4|problem4_rates|tables|all [--full]
+#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem4|problem4_rates|macro_step|tables|all [--full]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-[[ $# -eq 2 || ( $# -eq 3 && $3 == --full ) ]] || { sed -n '2,50p' "$0"; exit 2; }
+[[ $# -eq 2 || ( $# -eq 3 && $3 == --full ) ]] || { sed -n '2,55p' "$0"; exit 2; }
 build="$(cd "$1" && pwd)"
 what=$2
 full=${3:-}
@@ -282,17 +284,21 @@ local_elastic() {
 }
 # problem4_edit CELLS_X CELLS_Y RADIUS PACKING: problem4.prm's substitutions
 problem4_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; s#packings/PACKING#packings/$4#"; }
-# problem4_case NAME CELLS_X CELLS_Y RADIUS [sed expression]: a run that stops
-# (on the finer meshes an RVE in the band lost a particle) keeps its rows
-problem4_case() {
-  run_macro "$1" "$here/problem4.prm" 2 "$(problem4_edit "$2" "$3" "$4" lsyf_300); ${5:-}" || true
+# band_case NAME PRM [sed expression]: run_macro on 2 ranks; a run that stops (an RVE in a band
+# failed: a lost particle, an overlap beyond max_overlap) keeps its rows and the next case runs
+band_case() {
+  run_macro "$1" "$2" 2 "${3:-}" || true
   if grep -q "the run stopped after writing" "$results/$1/log"; then
     echo "$1: stopped before the end (results/$1/log); its converged rows are kept"
   fi
 }
+# problem4_case NAME CELLS_X CELLS_Y RADIUS [sed expression]
+problem4_case() { band_case "$1" "$here/problem4.prm" "$(problem4_edit "$2" "$3" "$4" lsyf_300); ${5:-}"; }
 problem4() {
   problem4_case problem4_2x4_rate4 2 4 0
-  problem4_case problem4_2x4_rate1 2 4 0 "s#set End time   = 0.015#set End time   = 0.06#; s#-4.8e-3 \* t / 0.015#-4.8e-3 * t / 0.06#"
+  # 1 /s with the macro step of 4 /s, 1 us = 10 DEM steps (one check): the default picks 2 us here,
+  # at which the RVEs' stress jumps from row to row (README, 'The macro step')
+  problem4_case problem4_2x4_rate1 2 4 0 "s#set End time   = 0.015#set End time   = 0.06#; s#-4.8e-3 \* t / 0.015#-4.8e-3 * t / 0.06#; s#^  set Analysis = dynamic#  set Analysis = dynamic\n  set Time step = 1e-6#"
   local c
   for c in "${problem4_cases[@]}"; do problem4_case $c; done
   local name x y radius modulus
@@ -307,13 +313,14 @@ problem4() {
 # strain), and E = 5.84e8 and 5e7 Pa (session 29), which held every element to one strain, no band;
 # E = 5e5 Pa (session 33): C_e's shear modulus 2.6-3.1 times the band's softening in shear of the
 # local and R = 15 mm runs (H_s = 0.068-0.081 MPa, problem3.py), the ratio of problem 4's band about
-# R wide, with R = 15, 20, 25 mm; and on 24x10 (5 mm elements, which R = 11.8 mm reaches, as in
-# problem 4) local and E = 5e5 Pa, for the band against the mesh and R
+# R wide, with R = 15, 20, 25 mm; and local on 24x10 (5 mm elements), for the band against the mesh
 problem3_cases=("problem3_R0 12 5 0" "problem3_R0.015 12 5 0.015" "problem3_R0.025 12 5 0.025"
                 "problem3_R0.025_le584 12 5 0.025 5.84e8" "problem3_R0.025_le50 12 5 0.025 5e7"
                 "problem3_R0.015_le0.5 12 5 0.015 5e5" "problem3_R0.02_le0.5 12 5 0.02 5e5"
-                "problem3_R0.025_le0.5 12 5 0.025 5e5" "problem3_R0_24x10 24 10 0"
-                "problem3_R0.0118_le0.5_24x10 24 10 0.0118 5e5")
+                "problem3_R0.025_le0.5 12 5 0.025 5e5" "problem3_R0_24x10 24 10 0")
+# ... and the local 12x5 run at the macro step of the 24x10 mesh (2 us = 20 DEM steps; the
+# default, 0.9 of the critical step, is 5 us = 50 DEM steps on 12x5) and at 1 us: NAME TIME_STEP
+problem3_step_cases=("problem3_R0_dt2us 2e-6" "problem3_R0_dt1us 1e-6")
 # problem3_edit CELLS_X CELLS_Y RADIUS [E]: problem3.prm's substitutions
 problem3_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; ${4:+$(local_elastic "$4")}"; }
 # submit_full NAME PRM [sed expression]: the case at the paper's size (lsyf_4096) in
@@ -348,10 +355,15 @@ problem4_full() {
   done
 }
 problem3() {
-  local c name x y radius modulus
+  local c name x y radius modulus dt
   for c in "${problem3_cases[@]}"; do
     read -r name x y radius modulus <<< "$c"
-    run_macro "$name" "$here/problem3.prm" 2 "$(problem3_edit "$x" "$y" "$radius" "$modulus")"
+    band_case "$name" "$here/problem3.prm" "$(problem3_edit "$x" "$y" "$radius" "$modulus")"
+  done
+  for c in "${problem3_step_cases[@]}"; do
+    read -r name dt <<< "$c"
+    band_case "$name" "$here/problem3.prm" \
+      "$(problem3_edit 12 5 0); s#^  set Analysis = dynamic#  set Analysis = dynamic\n  set Time step = $dt#"
   done
   problem3_table
 }
@@ -363,6 +375,27 @@ problem4_rates() {
   for r in 4 2 1 0.5; do
     run_macro "problem4_element_rate$r" "$here/problem4_element.prm" 1 "s#ENDT#$(awk -v r="$r" 'BEGIN {print 0.08 / r}')#g"
   done
+}
+# The macro step against the RVE servo's checks (session 33; README, 'The macro step'): one
+# element at 4 /s, NAME PRM TIME_STEP CHECK_INTERVAL; problem3.prm as one element without the
+# weak RVE, problem4_element.prm at 4 /s
+macro_step_cases=("step_p3_5us_ci10 problem3 5e-6 10" "step_p3_2us_ci10 problem3 2e-6 10"
+                  "step_p3_1us_ci10 problem3 1e-6 10" "step_p3_2us_ci5 problem3 2e-6 5"
+                  "step_p3_5us_ci25 problem3 5e-6 25" "step_p4_2us_ci10 problem4_element 2e-6 10"
+                  "step_p4_1us_ci10 problem4_element 1e-6 10" "step_p4_2us_ci5 problem4_element 2e-6 5")
+macro_step() {
+  local c name prm dt ci edit
+  for c in "${macro_step_cases[@]}"; do
+    read -r name prm dt ci <<< "$c"
+    if [[ $prm == problem3 ]]; then
+      edit="$(problem3_edit 1 1 0); /^subsection Imperfection/,/^end/d
+            s#^  set Analysis = dynamic#  set Analysis = dynamic\n  set Time step = $dt#"
+    else
+      edit="s#ENDT#0.02#g; s#^  set Time step    = 1e-6#  set Time step    = $dt#"
+    fi
+    run_macro "$name" "$here/$prm.prm" 1 "$edit; s/set Check interval        = 10/set Check interval        = $ci/"
+  done
+  $py "$here/macro_step.py" "$results" | tee "$results/macro_step.txt"
 }
 problem4_table() {
   $py "$here/problem4.py" "$results" | tee "$results/problem4.txt"
@@ -376,7 +409,9 @@ case "$what" in
   problem3) if [[ -n $full ]]; then problem3_full; else problem3; fi ;;
   problem4) if [[ -n $full ]]; then problem4_full; else problem4; fi ;;
   problem4_rates) problem4_rates ;;
-  tables) wave_table; problem1_tables; problem1_ensemble_table; modulus_table; problem3_table; problem4_table ;;
-  all) if [[ -n $full ]]; then problem3_full; problem4_full; else wave; problem1; modulus; problem3; problem4; problem4_rates; fi ;;
-  *) sed -n '2,50p' "$0"; exit 2 ;;
+  macro_step) macro_step ;;
+  tables) wave_table; problem1_tables; problem1_ensemble_table; modulus_table; problem3_table; problem4_table
+          $py "$here/macro_step.py" "$results" | tee "$results/macro_step.txt" ;;
+  all) if [[ -n $full ]]; then problem3_full; problem4_full; else wave; problem1; modulus; problem3; problem4; problem4_rates; macro_step; fi ;;
+  *) sed -n '2,55p' "$0"; exit 2 ;;
 esac

@@ -29,6 +29,11 @@ def inplane_band(history, rows, band_angles=range(180)):
     return x, gamma, width, angle, centres[int(np.argmax(means))]
 
 
+def shear_modulus(E, nu):
+    """The shear modulus of an isotropic law of Young's modulus E and Poisson ratio nu."""
+    return E / (2 * (1 + nu))
+
+
 def band_softening(history, tau):
     """(peak row, gamma_band, H_s): the band's softening modulus in shear H_s = (tau_peak - tau_end) /
     gamma_band of the run in `history`, tau a shear stress per row of history.h5 and gamma_band the

@@ -44,7 +44,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 import band_tools  # noqa: E402
-from band_tools import bw, inplane_band, plot_curves  # noqa: E402
+from band_tools import bw, inplane_band, plot_curves, shear_modulus  # noqa: E402
 
 WIDTH, DEPTH, P_CONFINING = 0.04, 0.005, 4.16e5
 MESHES_R = ["6x12", "8x16", "10x20"]  # the meshes whose IPs R = 11.8 mm reaches
@@ -123,11 +123,6 @@ def ratio_table(curves, names, every):
             e, _, r = curves[c]
             cells.append("-" if k >= len(r) else (f"**{r[k]:.3f}**" if k == int(np.argmax(r)) else f"{r[k]:.3f}"))
         print(f"| {100 * curves[names[0]][0][min(k, len(curves[names[0]][0]) - 1)]:.2f} % | " + " | ".join(cells) + " |")
-
-
-def shear_modulus(E, nu):
-    """The shear modulus of an isotropic law of Young's modulus E and Poisson ratio nu."""
-    return E / (2 * (1 + nu))
 
 
 def local_elastic_law(case_dir):

@@ -297,7 +297,7 @@ problem4_case() { band_case "$1" "$here/problem4.prm" "$(problem4_edit "$2" "$3"
 problem4() {
   problem4_case problem4_2x4_rate4 2 4 0
   # 1 /s with the macro step of 4 /s, 1 us = 10 DEM steps (one check): the default picks 2 us here,
-  # at which the RVEs' stress jumps from row to row (README, 'The macro step')
+  # at which the RVEs' stress jumps from row to row (README, 'The rate, and the macro step')
   problem4_case problem4_2x4_rate1 2 4 0 "s#set End time   = 0.015#set End time   = 0.06#; s#-4.8e-3 \* t / 0.015#-4.8e-3 * t / 0.06#; s#^  set Analysis = dynamic#  set Analysis = dynamic\n  set Time step = 1e-6#"
   local c
   for c in "${problem4_cases[@]}"; do problem4_case $c; done
@@ -378,8 +378,8 @@ problem4_rates() {
     run_macro "problem4_element_rate$r" "$here/problem4_element.prm" 1 "s#ENDT#$(awk -v r="$r" 'BEGIN {print 0.08 / r}')#g"
   done
 }
-# The macro step against the RVE servo's checks (session 33; README, 'The macro step'): one
-# element at 4 /s, NAME PRM TIME_STEP CHECK_INTERVAL; problem3.prm as one element without the
+# The macro step against the RVE servo's checks (session 33; README, 'The rate, and the macro
+# step'): one element at 4 /s, NAME PRM TIME_STEP CHECK_INTERVAL; problem3.prm as one element without the
 # weak RVE, problem4_element.prm at 4 /s
 macro_step_cases=("step_p3_5us_ci10 problem3 5e-6 10" "step_p3_2us_ci10 problem3 2e-6 10"
                   "step_p3_1us_ci10 problem3 1e-6 10" "step_p3_2us_ci5 problem3 2e-6 5"

@@ -34,6 +34,18 @@ def shear_modulus(E, nu):
     return E / (2 * (1 + nu))
 
 
+def print_ce_ratios(moduli, nu, softening):
+    """One line per Young's modulus E in `moduli` (Pa): C_e's shear modulus (Poisson ratio `nu`)
+    and its ratio to the smallest and largest H_s in `softening` (nothing if that is empty)."""
+    if not softening:
+        return
+    print()
+    for E in moduli:
+        mu = shear_modulus(E, nu)
+        print(f"- C_e of E = {E / 1e6:g} MPa: shear modulus {mu / 1e6:.3g} MPa, "
+              f"{mu / max(softening):.1f}-{mu / min(softening):.1f} times H_s")
+
+
 def band_softening(history, tau):
     """(peak row, gamma_band, H_s): the band's softening modulus in shear H_s = (tau_peak - tau_end) /
     gamma_band of the run in `history`, tau a shear stress per row of history.h5 and gamma_band the

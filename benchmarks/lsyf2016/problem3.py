@@ -36,7 +36,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from band_tools import band_softening, inplane_band, plot_curves, shear_modulus  # noqa: E402
+from band_tools import band_softening, inplane_band, plot_curves, print_ce_ratios  # noqa: E402
 
 CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "problem3_R0.025",
          "R = 25 mm, local elastic 584 MPa": "problem3_R0.025_le584",
@@ -122,12 +122,7 @@ def print_softening(results, done):
         moduli.append(h_s)
         print(f"| {k} | {100 * done[k]['gamma_macro'][peak]:.1f} % | {tau[peak] / 1e3:.0f} -> {tau[-1] / 1e3:.0f} | "
               f"{gamma:.3f} | {h_s / 1e6:.3f} |")
-    if moduli:
-        print()
-        for E in (5.84e8, 5e7, 5e5):
-            mu = shear_modulus(E, NU_E)
-            print(f"- C_e of E = {E / 1e6:g} MPa: shear modulus {mu / 1e6:.3g} MPa, "
-                  f"{mu / max(moduli):.1f}-{mu / min(moduli):.1f} times H_s")
+    print_ce_ratios((5.84e8, 5e7, 5e5), NU_E, moduli)
 
 
 def main():

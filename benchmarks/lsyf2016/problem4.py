@@ -44,7 +44,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 import band_tools  # noqa: E402
-from band_tools import bw, inplane_band, plot_curves, shear_modulus  # noqa: E402
+from band_tools import bw, inplane_band, plot_curves, print_ce_ratios, shear_modulus  # noqa: E402
 
 WIDTH, DEPTH, P_CONFINING = 0.04, 0.005, 4.16e5
 MESHES_R = ["6x12", "8x16", "10x20"]  # the meshes whose IPs R = 11.8 mm reaches
@@ -189,12 +189,7 @@ def print_softening(curves, done):
             e, t0, t1, g, h = band_softening(curves, done[k], k)
             moduli.append(h)
             print(f"| {k} | {100 * e:.2f} % | {t0 / 1e3:.0f} -> {t1 / 1e3:.0f} | {g:.3f} | {h / 1e6:.2f} |")
-    if moduli:
-        print()
-        for E in (50e6, 5e6, 1e6):
-            mu = shear_modulus(E, NU_E)
-            print(f"- C_e of E = {E / 1e6:g} MPa: shear modulus {mu / 1e6:.3g} MPa, "
-                  f"{mu / max(moduli):.1f}-{mu / min(moduli):.1f} times H_s")
+    print_ce_ratios((50e6, 5e6, 1e6), NU_E, moduli)
 
 
 def print_load_parts(curves, done):

@@ -3,7 +3,8 @@
 one RVE, loaded at 4 /s with the macro step and the RVE's 'Check interval' varied (run.sh
 macro_step). Reads RESULTS/step_*/ and prints, per case, the stress ratio of every row and, from
 the fifth row on (past the peak), its mean, standard deviation and largest jump between rows; then
-problem 4's element at the rates of run.sh problem4_rates, where they exist.
+problem 4's element at the rates of run.sh problem4_rates, and problem 1's shear element (lsyf_300)
+at three macro steps against the single RVE driven continuously (fe2dem-rve), where they exist.
 
   step_p3_*   problem3.prm as one 118 x 50.6 mm element without the weak RVE: tau/p of sigma
               (simple shear to 8 % under 416 kPa)
@@ -52,7 +53,29 @@ def main():
         print(f"| {os.path.basename(d)} | {dem} | {dem // ci} | {' '.join(f'{v:.3f}' for v in r)} | "
               f"{late.mean():.3f} | {late.std():.3f} | {np.abs(np.diff(late)).max():.3f} |")
     print_rates(sys.argv[1])
+    print_shear(sys.argv[1])
     return 0
+
+
+def print_shear(results):
+    """Problem 1's shear element (lsyf_300, 4 /s) at each macro step against the single RVE driven
+    continuously on the same F (step_shear_rve/rve.csv, rows after the 3 isotropic ones)."""
+    reference = os.path.join(results, "step_shear_rve", "rve.csv")
+    runs = sorted(glob.glob(os.path.join(results, "step_shear_*us", "wall_s")))
+    if not os.path.exists(reference) or not runs:
+        return
+    with open(reference) as f:
+        ref = np.array([float(r["sigma12"]) for r in list(csv.DictReader(f))[3:]])
+    print("\n| shear element | macro step (DEM steps) | sigma12 against the single RVE: rows 1-16 (%) | mean | "
+          "largest |")
+    print("|---|---|---|---|---|")
+    for w in runs:
+        d = os.path.dirname(w)
+        dem = int(re.search(r"\((\d+) DEM steps of", open(os.path.join(d, "log")).read()).group(1))
+        with h5py.File(os.path.join(d, "out", "history.h5"), "r") as h:
+            diff = 100 * (h["sigma"][:, 0, 1] / ref - 1)
+        print(f"| {os.path.basename(d)} | {dem} | {' '.join(f'{v:+.1f}' for v in diff)} | {diff.mean():+.1f} | "
+              f"{diff[np.argmax(np.abs(diff))]:+.1f} |")
 
 
 def print_rates(results):

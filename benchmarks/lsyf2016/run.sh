@@ -41,7 +41,9 @@
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
 #   macro_step one element at 4 /s with the macro step and the RVE's
-#              'Check interval' varied (problems 3 and 4's RVEs; macro_step.py)
+#              'Check interval' varied (problems 3 and 4's RVEs), and problem
+#              1's shear element with lsyf_300 at three macro steps against
+#              fe2dem-rve's continuous drive (macro_step.py)
 #   problem3 --full, problem4 --full, all --full   the same cases at the
 #              paper's size, lsyf_4096 RVEs (problem 3's weak one made by
 #              weaken_packing.py into results/full/), as SLURM jobs through
@@ -56,7 +58,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-[[ $# -eq 2 || ( $# -eq 3 && $3 == --full ) ]] || { sed -n '2,55p' "$0"; exit 2; }
+[[ $# -eq 2 || ( $# -eq 3 && $3 == --full ) ]] || { sed -n '2,57p' "$0"; exit 2; }
 build="$(cd "$1" && pwd)"
 what=$2
 full=${3:-}
@@ -397,6 +399,18 @@ macro_step() {
     fi
     run_macro "$name" "$here/$prm.prm" 1 "$edit; s/set Check interval        = 10/set Check interval        = $ci/"
   done
+  # against the single RVE driven continuously (fe2dem-rve, its default Check interval 50; with 10
+  # it stopped on an overlap at 1.5 %): problem 1's shear element (every node prescribed: F12 = gamma,
+  # the other F fixed) with lsyf_300 to 8 % at 4 /s, Check interval 10, at three macro steps
+  local small="s#packings/lsyf_4096#packings/lsyf_300#"
+  run_rve step_shear_rve "$here/problem1_shear_rve.prm" "$small; s#Shear strain      = 0.02#Shear strain      = 0.08#
+    s#Strain rate       = 0.5#Strain rate       = 4#; s#Loading steps     = 8#Loading steps     = 16#"
+  for dt in 1e-6 2e-6 5e-6; do
+    run_macro "step_shear_${dt%e-6}us" "$here/problem1_shear_dynamic.prm" 1 "$small; s#End time   = 0.04#End time   = 0.02#
+      s#Load steps = 8#Load steps = 16#; s#0.02 \* t / 0.04 \* y#0.08 * t / 0.02 * y#g
+      0,/^subsection RVE/s//subsection RVE\n  set Check interval        = 10/
+      s#^  set Analysis     = dynamic#  set Analysis     = dynamic\n  set Time step    = $dt#"
+  done
   $py "$here/macro_step.py" "$results" | tee "$results/macro_step.txt"
 }
 problem4_table() {
@@ -415,5 +429,5 @@ case "$what" in
   tables) wave_table; problem1_tables; problem1_ensemble_table; modulus_table; problem3_table; problem4_table
           $py "$here/macro_step.py" "$results" | tee "$results/macro_step.txt" ;;
   all) if [[ -n $full ]]; then problem3_full; problem4_full; else wave; problem1; modulus; problem3; problem4; problem4_rates; macro_step; fi ;;
-  *) sed -n '2,55p' "$0"; exit 2 ;;
+  *) sed -n '2,57p' "$0"; exit 2 ;;
 esac

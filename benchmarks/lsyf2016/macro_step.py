@@ -23,6 +23,12 @@ import h5py
 import numpy as np
 
 
+def dem_steps_per_macro_step(case_dir):
+    """The DEM steps of one macro step, as fe2dem's log states it."""
+    with open(os.path.join(case_dir, "log")) as f:
+        return int(re.search(r"\((\d+) DEM steps of", f.read()).group(1))
+
+
 def ratio(case_dir):
     """The stress ratio per row: tau/p of sigma for problem 3's element, the stress ratio of the
     summary for problem 4's."""
@@ -46,7 +52,7 @@ def main():
     print("|---|---|---|---|---|---|---|")
     for d in cases:
         text = open(os.path.join(d, "macro.prm")).read()
-        dem = int(re.search(r"\((\d+) DEM steps of", open(os.path.join(d, "log")).read()).group(1))
+        dem = dem_steps_per_macro_step(d)
         ci = int(re.search(r"set Check interval\s*=\s*(\d+)", text).group(1))
         r = ratio(d)
         late = r[4:]
@@ -71,7 +77,7 @@ def print_shear(results):
     print("|---|---|---|---|---|")
     for w in runs:
         d = os.path.dirname(w)
-        dem = int(re.search(r"\((\d+) DEM steps of", open(os.path.join(d, "log")).read()).group(1))
+        dem = dem_steps_per_macro_step(d)
         with h5py.File(os.path.join(d, "out", "history.h5"), "r") as h:
             diff = 100 * (h["sigma"][:, 0, 1] / ref - 1)
         print(f"| {os.path.basename(d)} | {dem} | {' '.join(f'{v:+.1f}' for v in diff)} | {diff.mean():+.1f} | "
@@ -89,7 +95,7 @@ def print_rates(results):
     print("|---|---|---|---|---|---|---|")
     for w in runs:
         d = os.path.dirname(w)
-        dem = int(re.search(r"\((\d+) DEM steps of", open(os.path.join(d, "log")).read()).group(1))
+        dem = dem_steps_per_macro_step(d)
         r = ratio(d)
         late = r[3:]  # from 2 %
         print(f"| {d.split('rate')[-1]} | {dem} | {r.max():.3f} | {late.mean():.3f} | {late.std():.3f} | "

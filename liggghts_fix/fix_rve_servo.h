@@ -312,12 +312,19 @@ private:
       sum = sum + per_particle[g[m]];
     return sum;
   }
+  /// A servo correction of the frame's unknowns (step 4), then the frame's move to them.
   void apply_servo_correction();
+  /// The servo correction alone: the gains, their adaptation and the integral action.
+  void correct_servo();
   void fail(Status s, const std::string& reason);
   // --- timed solves (fix_rve_servo_timed.tpp) ------------------------------
   void begin_timed_solve(const Tensor& F_before);
   /// Velocity gradient of the mean motion F_before -> F of a timed solve at its current step.
   Tensor timed_velocity_gradient() const;
+  /// The mean motion's F after @p step DEM steps of a timed solve (F_ at its end).
+  Tensor timed_deformation(long step) const;
+  /// The frame's move of the check that starts at DEM step @p step of a timed solve.
+  void schedule_timed_segment(long step);
   /// A check of a timed solve: homogenise, filter, finish at its last step.
   void timed_check(long step);
   /// The contact of contacts_ with the largest overlap, for messages.

@@ -36,9 +36,10 @@ void FixRveServo<dim>::begin_solve(const Tensor* F)
   checks_since_contact_pass_ = 1 << 30; // first relaxed check of a solve: fresh contact pass
   progress_.start(0);
   solve_pending_ = false;
-  schedule_frame_move(F_before);
   if (timed_steps_ > 0)
     begin_timed_solve(F_before);
+  else
+    schedule_frame_move(F_before);
   // inner_start affine: the inner particles get the velocity field of the
   // affine motion F_before -> F while the frame moves (see initial_integrate).
   // (The time step may not be known yet: the first solve can begin before init().)
@@ -279,10 +280,12 @@ void FixRveServo<dim>::homogenise(double ekin)
   Result& r = result_;
   collect_contacts();
   r.contacts = fe2dem::contact_statistics(contacts_, physical_of_, law_);
-  const double V0 = frame_.reference_volume(), J = fe2dem::det(F_);
+  // F now: a check inside a timed solve samples the mean motion on its way to F_
+  const Tensor F_now = timed_steps_ > 0 ? timed_deformation(r.dem_steps) : F_;
+  const double V0 = frame_.reference_volume(), J = fe2dem::det(F_now);
   r.F = F_;
   r.P = fe2dem::boundary_piola(frame_, frame_force_);
-  r.sigma = fe2dem::cauchy_from_piola(r.P, F_);
+  r.sigma = fe2dem::cauchy_from_piola(r.P, F_now);
   r.sigma_lw = (1.0 / (J * V0)) * r.contacts.love_weber_sum;
   r.F_check = fe2dem::frame_deformation(frame_, frame_positions());
   r.ekin_epot = r.contacts.potential_energy > 0.0 ? ekin / r.contacts.potential_energy
@@ -371,6 +374,13 @@ double FixRveServo<dim>::servo_residual() const
 template <int dim>
 void FixRveServo<dim>::apply_servo_correction()
 {
+  correct_servo();
+  schedule_frame_move(F_);
+}
+
+template <int dim>
+void FixRveServo<dim>::correct_servo()
+{
   // timed solves with timed_servo integral: integral action (fix_rve_servo_timed.tpp)
   const bool integral = timed_steps_ > 0 && timed_integral_;
   for (std::size_t e = 0; e < frame_.groups.size(); ++e)
@@ -386,5 +396,4 @@ void FixRveServo<dim>::apply_servo_correction()
     dmc = dmc + frame_moment_[k];
   servo_.correct_corner(dmc, atom->rmass[ic], atom->radius[ic], dtv_, integral);
   ++result_.servo_iterations;
-  schedule_frame_move(F_);
 }

@@ -1,10 +1,10 @@
 // fix rve/servo: timed solves for explicit dynamics of the macro scale
 // (physics.md §1.2). A timed solve advances the RVE by a fixed physical
-// time: exactly timed_steps DEM steps, the frame moving towards F X + w at
-// the end of the solve, with no convergence stop. The servo runs as a
-// continuous feedback at every check (it does not wait for a relaxed
-// state): its correction of the fluctuations w and rotations retargets the
-// frame, which reaches the new targets at the end of the solve. Without it
+// time: exactly timed_steps DEM steps, the frame ending at F X + w, with no
+// convergence stop. The servo runs as a continuous feedback at every check
+// (it does not wait for a relaxed state): its correction of the
+// fluctuations w and rotations retargets the frame, which reaches them, on
+// the mean motion, at the next check (schedule_timed_segment). Without it
 // the frame is an affine boundary, and the RVE is much stiffer (measured:
 // twice the quasi-static shear stress). The stresses returned are the mean
 // over the solve's checks (a box filter over the macro step), so that the
@@ -62,8 +62,8 @@ void FixRveServo<dim>::timed_check(long step)
   if (step < timed_steps_)
   {
     const Tensor affine = motion_.affine_step(); // inner_start affine keeps its rate
-    apply_servo_correction();                    // retargets the frame: F X + w, new w
-    motion_.set_duration(static_cast<int>(timed_steps_ - step));
+    correct_servo();
+    schedule_timed_segment(step); // towards F(s) X + w with the new w, by the next check
     motion_.set_affine_step(affine);
     return;
   }
@@ -80,9 +80,41 @@ template <int dim>
 void FixRveServo<dim>::begin_timed_solve(const Tensor& F_before)
 {
   timed_F_from_ = F_before;
-  motion_.set_duration(static_cast<int>(timed_steps_));
+  schedule_timed_segment(0);
   timed_samples_ = 0;
   timed_P_sum_ = timed_sigma_sum_ = timed_sigma_lw_sum_ = Tensor{};
+}
+
+// The frame moves check by check: at each check it heads for F(s) X + w,
+// F(s) the mean motion at the next check and w the servo's unknowns just
+// corrected, and gets there at that check. A correction is thus carried out
+// within one check interval wherever the check falls in the solve, so the
+// servo acts the same whatever the macro step. (Before, a move ran to the
+// end of the solve: a correction made at a solve's start was half carried
+// out by the next check of a solve of two checks, one made in its middle
+// wholly; with integral action that alternation made the RVE's stress jump
+// from macro step to macro step: benchmarks/lsyf2016, 'The macro step'.)
+template <int dim>
+void FixRveServo<dim>::schedule_timed_segment(long step)
+{
+  const long next = step + check_every_;
+  motion_.schedule(timed_deformation(step), timed_deformation(next), frame_positions(), frame_, servo_,
+                   move_rate_ * r_min_);
+  motion_.set_duration(check_every_);
+}
+
+// F(s) = F_from + s (F - F_from), s = step / timed_steps: the straight path
+// of timed_velocity_gradient(); exactly F_from and F_ at the ends.
+template <int dim>
+typename FixRveServo<dim>::Tensor FixRveServo<dim>::timed_deformation(long step) const
+{
+  using fe2dem::operator+;
+  if (step <= 0)
+    return timed_F_from_;
+  if (step >= timed_steps_)
+    return F_;
+  const double s = static_cast<double>(step) / timed_steps_;
+  return timed_F_from_ + s * (F_ + (-1.0) * timed_F_from_);
 }
 
 // L = dF/dt F^-1 along the straight path F_from -> F of the solve.
@@ -90,8 +122,6 @@ template <int dim>
 typename FixRveServo<dim>::Tensor FixRveServo<dim>::timed_velocity_gradient() const
 {
   using fe2dem::operator+;
-  const double s = static_cast<double>(result_.dem_steps) / timed_steps_;
   const Tensor dF = F_ + (-1.0) * timed_F_from_;
-  const Tensor F_s = timed_F_from_ + s * dF;
-  return (1.0 / (timed_steps_ * dtv_)) * matmul(dF, fe2dem::inverse(F_s));
+  return (1.0 / (timed_steps_ * dtv_)) * matmul(dF, fe2dem::inverse(timed_deformation(result_.dem_steps)));
 }

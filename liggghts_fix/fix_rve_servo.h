@@ -65,8 +65,9 @@
  * solve advances while the script (or C++) runs steps; f_ID[1] is the status.
  * `fix_modify ID timed_steps N` (N a multiple of check_every; 0: off, the default;
  * not kept in restarts) makes later solves timed, for explicit dynamics of the
- * macro scale: exactly N steps, the frame moving towards F X + w, the servo
- * correcting w at every check as a continuous feedback, no convergence stop;
+ * macro scale: exactly N steps, the frame moving check by check along the
+ * straight path of F plus w, the servo correcting w at every check as a
+ * continuous feedback, no convergence stop;
  * P and the stresses are their means over the solve's checks
  * (fix_rve_servo_timed.tpp).
  *

@@ -62,7 +62,7 @@ public:
   /// Length of the current move in steps.
   int steps() const { return steps_; }
   /// The move started by the last schedule() takes exactly @p n steps from
-  /// now (timed solves: the frame arrives at the end of the solve). @pre n >= 1.
+  /// now (timed solves: the frame arrives at the next check). @pre n >= 1.
   void set_duration(int n) { steps_ = n; }
   /// Freezes the frame where it is (a failed solve).
   void stop() { steps_ = done_ = 0; }

@@ -322,8 +322,8 @@ problem3_cases=("problem3_R0 12 5 0" "problem3_R0.015 12 5 0.015" "problem3_R0.0
                 "problem3_R0.025_le0.5 12 5 0.025 5e5")
 # ... and the local runs of the macro step (README, 'The rate, and the macro step'), NAME CELLS_X
 # CELLS_Y TIME_STEP: 24x10 with the default step (2 us = 20 DEM steps, at which the RVEs' stress
-# jumps; planned for the band against the mesh), 12x5 at that step and at 1 us (its default is
-# 5 us = 50 DEM steps); not in --full
+# jumped before session 34; for the band against the mesh), 12x5 at that step and at 1 us (its
+# default is 5 us = 50 DEM steps); not in --full
 problem3_step_cases=("problem3_R0_24x10 24 10 default" "problem3_R0_dt2us 12 5 2e-6" "problem3_R0_dt1us 12 5 1e-6")
 # problem3_edit CELLS_X CELLS_Y RADIUS [E]: problem3.prm's substitutions
 problem3_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; ${4:+$(local_elastic "$4")}"; }

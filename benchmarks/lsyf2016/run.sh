@@ -36,9 +36,9 @@
 #              12x5x1 one-point elements with lsyf_300 RVEs, one of them
 #              lsyf_300_weak (problem3.prm), local and nonlocal with R = 15
 #              and 25 mm, the local elastic formulation with R = 15-25 mm;
-#              local on 12x5 at two more macro steps; the problem3_24x10
+#              local on 12x5 at two more macro steps; the problem3_12x10
 #              cases too; 2 ranks each; problem3.py's tables and PNGs
-#   problem3_24x10  problem 3 on 24x10x1: local and local elastic, R = 10-20 mm
+#   problem3_12x10  problem 3 on 12x10x1: local and local elastic, R = 10-20 mm
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
 #   macro_step one element at 4 /s with the macro step and the RVE's
@@ -55,7 +55,7 @@
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
 # result exists and whose parameter file is unchanged is not run again.
 #
-#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_24x10|problem4|problem4_rates|macro_step|tables|all [--full]
+#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_12x10|problem4|problem4_rates|macro_step|tables|all [--full]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -322,16 +322,16 @@ problem3_cases=("problem3_R0 12 5 0" "problem3_R0.015 12 5 0.015" "problem3_R0.0
                 "problem3_R0.015_le0.5 12 5 0.015 5e5" "problem3_R0.02_le0.5 12 5 0.02 5e5"
                 "problem3_R0.025_le0.5 12 5 0.025 5e5")
 # ... and the local runs of the macro step (README, 'The rate, and the macro step'), NAME CELLS_X
-# CELLS_Y TIME_STEP: 24x10 with the default step (2 us = 20 DEM steps, at which the RVEs' stress
-# jumped before session 34; for the band against the mesh), 12x5 at that step and at 1 us (its
-# default is 5 us = 50 DEM steps); not in --full
+# CELLS_Y TIME_STEP: 12x5 at 2 us (at which the RVEs' stress jumped before session 34) and at 1 us
+# (its default is 5 us = 50 DEM steps); not in --full
 problem3_step_cases=("problem3_R0_dt2us 12 5 2e-6" "problem3_R0_dt1us 12 5 1e-6")
-# ... and on 24x10 (elements 4.9 x 5.1 mm) at the default step (2 us = 20 DEM steps): local and the
-# local elastic formulation of E = 0.5 MPa at R = 20, 10 and 15 mm, for the band against R and the
-# mesh (session 35: the 24x10 local run of session 33 stopped on an overlap at load step 10 with the
-# old frame motion)
-problem3_fine_cases=("problem3_R0_24x10 24 10 0" "problem3_R0.02_le0.5_24x10 24 10 0.02 5e5"
-                     "problem3_R0.01_le0.5_24x10 24 10 0.01 5e5" "problem3_R0.015_le0.5_24x10 24 10 0.015 5e5")
+# ... and on 12x10 (elements 9.8 x 5.1 mm: the band runs along x, so its width across y is what the
+# mesh must resolve; 24x10 costs twice as much for the same rows) at the default step (2 us = 20 DEM
+# steps): local and the local elastic formulation of E = 0.5 MPa at R = 20, 10 and 15 mm, for the
+# band against R and the mesh (session 35; session 33's local 24x10 run stopped on an overlap at
+# load step 10 with the old frame motion)
+problem3_fine_cases=("problem3_R0_12x10 12 10 0" "problem3_R0.02_le0.5_12x10 12 10 0.02 5e5"
+                     "problem3_R0.01_le0.5_12x10 12 10 0.01 5e5" "problem3_R0.015_le0.5_12x10 12 10 0.015 5e5")
 # problem3_edit CELLS_X CELLS_Y RADIUS [E]: problem3.prm's substitutions
 problem3_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; ${4:+$(local_elastic "$4")}"; }
 # submit_full NAME PRM [sed expression]: the case at the paper's size (lsyf_4096) in
@@ -438,7 +438,7 @@ case "$what" in
   problem1_ensemble) problem1_ensemble ;;
   modulus) modulus ;;
   problem3) if [[ -n $full ]]; then problem3_full; else problem3; fi ;;
-  problem3_24x10) problem3_run "${problem3_fine_cases[@]}"; problem3_table ;;
+  problem3_12x10) problem3_run "${problem3_fine_cases[@]}"; problem3_table ;;
   problem4) if [[ -n $full ]]; then problem4_full; else problem4; fi ;;
   problem4_rates) problem4_rates ;;
   macro_step) macro_step ;;

@@ -67,8 +67,8 @@
  * not kept in restarts) makes later solves timed, for explicit dynamics of the
  * macro scale: exactly N steps, the frame moving check by check along the
  * straight path of F plus w, the servo correcting w at every check as a
- * continuous feedback, no convergence stop;
- * P and the stresses are their means over the solve's checks
+ * continuous feedback, no convergence stop, the frame at rest after the last
+ * check until the next F; P and the stresses are their means over the solve's checks
  * (fix_rve_servo_timed.tpp).
  *
  * The fix integrates every particle itself (do not add fix nve/sphere):

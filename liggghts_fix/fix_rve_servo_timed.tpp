@@ -1,7 +1,7 @@
 // fix rve/servo: timed solves for explicit dynamics of the macro scale
 // (physics.md §1.2). A timed solve advances the RVE by a fixed physical
 // time: exactly timed_steps DEM steps, the frame ending at F X + w, with no
-// convergence stop. The servo runs as a continuous feedback at every check
+// convergence stop; the frame then rests until the next solve. The servo runs as a continuous feedback at every check
 // (it does not wait for a relaxed state): its correction of the
 // fluctuations w and rotations retargets the frame, which reaches them, on
 // the mean motion, at the next check (schedule_timed_segment). Without it
@@ -67,7 +67,11 @@ void FixRveServo<dim>::timed_check(long step)
     motion_.set_affine_step(affine);
     return;
   }
-  apply_servo_correction(); // the next solve starts towards the corrected w
+  // The last check corrects w but does not move the frame: the next solve's
+  // first segment heads for its F X + corrected w (begin_timed_solve), and
+  // steps run before it (no new F) find the frame at rest where this check
+  // put it, as after a relaxation solve.
+  correct_servo();
   const double w = 1.0 / timed_samples_;
   result_.P = w * timed_P_sum_;
   result_.sigma = w * timed_sigma_sum_;

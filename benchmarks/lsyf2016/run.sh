@@ -38,7 +38,7 @@
 #              and 25 mm, the local elastic formulation with R = 15-25 mm;
 #              local on 12x5 at two more macro steps; the problem3_12x10
 #              cases too; 2 ranks each; problem3.py's tables and PNGs
-#   problem3_12x10  problem 3 on 12x10x1: local and local elastic, R = 10-20 mm
+#   problem3_12x10  problem 3 on 12x10x1: local and local elastic, R = 10-20 mm, E = 0.5 and 2 MPa
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
 #   macro_step one element at 4 /s with the macro step and the RVE's
@@ -327,11 +327,13 @@ problem3_cases=("problem3_R0 12 5 0" "problem3_R0.015 12 5 0.015" "problem3_R0.0
 problem3_step_cases=("problem3_R0_dt2us 12 5 2e-6" "problem3_R0_dt1us 12 5 1e-6")
 # ... and on 12x10 (elements 9.8 x 5.1 mm: the band runs along x, so its width across y is what the
 # mesh must resolve; 24x10 costs twice as much for the same rows) at the default step (2 us = 20 DEM
-# steps): local and the local elastic formulation of E = 0.5 MPa at R = 20, 10 and 15 mm, for the
-# band against R and the mesh (session 35; session 33's local 24x10 run stopped on an overlap at
-# load step 10 with the old frame motion)
+# steps): local, the local elastic formulation of E = 0.5 MPa at R = 20 and 10 mm, and, as at
+# R = 20 mm the elements took an element-scale pattern that C_e of 1.5 H_s hardly resisted, of
+# E = 2 MPa (6 H_s) at R = 10 and 15 mm, for the band against R and the mesh (session 35; session
+# 33's local 24x10 run stopped on an overlap at load step 10 with the old frame motion)
 problem3_fine_cases=("problem3_R0_12x10 12 10 0" "problem3_R0.02_le0.5_12x10 12 10 0.02 5e5"
-                     "problem3_R0.01_le0.5_12x10 12 10 0.01 5e5" "problem3_R0.015_le0.5_12x10 12 10 0.015 5e5")
+                     "problem3_R0.01_le0.5_12x10 12 10 0.01 5e5" "problem3_R0.01_le2_12x10 12 10 0.01 2e6"
+                     "problem3_R0.015_le2_12x10 12 10 0.015 2e6")
 # problem3_edit CELLS_X CELLS_Y RADIUS [E]: problem3.prm's substitutions
 problem3_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; ${4:+$(local_elastic "$4")}"; }
 # submit_full NAME PRM [sed expression]: the case at the paper's size (lsyf_4096) in

@@ -49,15 +49,17 @@ CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "p
          "R = 10 mm, local elastic 0.5 MPa, 12x10": "problem3_R0.01_le0.5_12x10",
          "R = 20 mm, local elastic 0.5 MPa, 12x10": "problem3_R0.02_le0.5_12x10",
          "R = 10 mm, local elastic 2 MPa, 12x10": "problem3_R0.01_le2_12x10",
-         "R = 15 mm, local elastic 2 MPa, 12x10": "problem3_R0.015_le2_12x10"}
+         "R = 15 mm, local elastic 2 MPa, 12x10": "problem3_R0.015_le2_12x10",
+         "R = 15 mm, local elastic 2 MPa": "problem3_R0.015_le2"}
 # the band width against R and the mesh: (R in mm, element height in mm, case)
 # The macro step is fe2dem's default (5 us on 12x5, 2 us on 12x10) but where the case names it
-# (run.sh problem3_step_cases and problem3_fine_cases; README, 'The rate, and the macro step')
+# (run.sh problem3_step_cases and problem3_band_cases; README, 'The rate, and the macro step')
 RADII = [(0.0, 10.1, "local"), (15.0, 10.1, "R = 15 mm, local elastic 0.5 MPa"),
          (20.0, 10.1, "R = 20 mm, local elastic 0.5 MPa"), (25.0, 10.1, "R = 25 mm, local elastic 0.5 MPa"),
          (0.0, 5.06, "local, 12x10"), (10.0, 5.06, "R = 10 mm, local elastic 0.5 MPa, 12x10"),
          (20.0, 5.06, "R = 20 mm, local elastic 0.5 MPa, 12x10"),
-         (10.0, 5.06, "R = 10 mm, local elastic 2 MPa, 12x10"), (15.0, 5.06, "R = 15 mm, local elastic 2 MPa, 12x10")]
+         (10.0, 5.06, "R = 10 mm, local elastic 2 MPa, 12x10"), (15.0, 5.06, "R = 15 mm, local elastic 2 MPa, 12x10"),
+         (15.0, 10.1, "R = 15 mm, local elastic 2 MPa")]
 # the band's directions in simple shear: along the shear, within 20 degrees of x (the local runs' band
 # is at 4 degrees); among all directions the finder can return a hot spot around the weak RVE
 ALONG_X = list(range(0, 21)) + list(range(160, 180))

@@ -1,10 +1,11 @@
 // fix rve/servo: timed solves for explicit dynamics of the macro scale
 // (physics.md §1.2). A timed solve advances the RVE by a fixed physical
 // time: exactly timed_steps DEM steps, the frame ending at F X + w, with no
-// convergence stop; the frame then rests until the next solve. The servo runs as a continuous feedback at every check
-// (it does not wait for a relaxed state): its correction of the
-// fluctuations w and rotations retargets the frame, which reaches them, on
-// the mean motion, at the next check (schedule_timed_segment). Without it
+// convergence stop; the frame then rests until the next solve. The servo
+// runs as a continuous feedback at every check (it does not wait for a
+// relaxed state): its correction of the fluctuations w and rotations
+// retargets the frame, which reaches them, on the mean motion, at the next
+// check (schedule_timed_segment). Without it
 // the frame is an affine boundary, and the RVE is much stiffer (measured:
 // twice the quasi-static shear stress). The stresses returned are the mean
 // over the solve's checks (a box filter over the macro step), so that the

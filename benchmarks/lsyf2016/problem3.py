@@ -214,7 +214,7 @@ def main():
     # of the increment and of its part the RVEs do not see (own minus averaged)
     print(f"\n## the elements' signed shear increment dF12 + dF21 over the last {BAND_ROWS} rows")
     print("| case | weak IP | mean | largest | smallest | IPs shearing backwards "
-          f"| std off the band | own - averaged: std off the band |")
+          "| std off the band | own - averaged: std off the band |")
     print("|---|---|---|---|---|---|---|---|")
     for k, d in done.items():
         g, g_seen = (shear_increment(d[f], len(d["step"])) for f in ("F", "F_nonlocal"))

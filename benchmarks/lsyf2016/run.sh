@@ -36,9 +36,10 @@
 #              12x5x1 one-point elements with lsyf_300 RVEs, one of them
 #              lsyf_300_weak (problem3.prm), local and nonlocal with R = 15
 #              and 25 mm, the local elastic formulation with R = 15-25 mm;
-#              local on 12x5 at two more macro steps; the problem3_12x10
+#              local on 12x5 at two more macro steps; the problem3_band
 #              cases too; 2 ranks each; problem3.py's tables and PNGs
-#   problem3_12x10  problem 3 on 12x10x1: local and local elastic, R = 10-20 mm, E = 0.5 and 2 MPa
+#   problem3_band  problem 3 on 12x10x1 (local, local elastic R = 10-20 mm, E = 0.5 and
+#              2 MPa) and on 12x5 with E = 2 MPa: the band against R and the mesh
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
 #   macro_step one element at 4 /s with the macro step and the RVE's
@@ -55,11 +56,11 @@
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
 # result exists and whose parameter file is unchanged is not run again.
 #
-#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_12x10|problem4|problem4_rates|macro_step|tables|all [--full]
+#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem4|problem4_rates|macro_step|tables|all [--full]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-[[ $# -eq 2 || ( $# -eq 3 && $3 == --full ) ]] || { sed -n '2,58p' "$0"; exit 2; }
+[[ $# -eq 2 || ( $# -eq 3 && $3 == --full ) ]] || { sed -n '2,59p' "$0"; exit 2; }
 build="$(cd "$1" && pwd)"
 what=$2
 full=${3:-}
@@ -329,11 +330,12 @@ problem3_step_cases=("problem3_R0_dt2us 12 5 2e-6" "problem3_R0_dt1us 12 5 1e-6"
 # mesh must resolve; 24x10 costs twice as much for the same rows) at the default step (2 us = 20 DEM
 # steps): local, the local elastic formulation of E = 0.5 MPa at R = 20 and 10 mm, and, as at
 # R = 20 mm the elements took an element-scale pattern that C_e of 1.5 H_s hardly resisted, of
-# E = 2 MPa (6 H_s) at R = 10 and 15 mm, for the band against R and the mesh (session 35; session
-# 33's local 24x10 run stopped on an overlap at load step 10 with the old frame motion)
-problem3_fine_cases=("problem3_R0_12x10 12 10 0" "problem3_R0.02_le0.5_12x10 12 10 0.02 5e5"
+# E = 2 MPa (6 H_s) at R = 10 and 15 mm, and that at R = 15 mm on 12x5 too, for the band against R
+# and the mesh (session 35; session 33's local 24x10 run stopped on an overlap at load step 10 with
+# the old frame motion)
+problem3_band_cases=("problem3_R0_12x10 12 10 0" "problem3_R0.02_le0.5_12x10 12 10 0.02 5e5"
                      "problem3_R0.01_le0.5_12x10 12 10 0.01 5e5" "problem3_R0.01_le2_12x10 12 10 0.01 2e6"
-                     "problem3_R0.015_le2_12x10 12 10 0.015 2e6")
+                     "problem3_R0.015_le2_12x10 12 10 0.015 2e6" "problem3_R0.015_le2 12 5 0.015 2e6")
 # problem3_edit CELLS_X CELLS_Y RADIUS [E]: problem3.prm's substitutions
 problem3_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; ${4:+$(local_elastic "$4")}"; }
 # submit_full NAME PRM [sed expression]: the case at the paper's size (lsyf_4096) in
@@ -383,7 +385,7 @@ problem3() {
     band_case "$name" "$here/problem3.prm" "$(problem3_edit "$x" "$y" 0)
       s#^  set Analysis = dynamic#  set Analysis = dynamic\n  set Time step = $dt#"
   done
-  problem3_run "${problem3_fine_cases[@]}"
+  problem3_run "${problem3_band_cases[@]}"
   problem3_table
 }
 problem3_table() {
@@ -440,12 +442,12 @@ case "$what" in
   problem1_ensemble) problem1_ensemble ;;
   modulus) modulus ;;
   problem3) if [[ -n $full ]]; then problem3_full; else problem3; fi ;;
-  problem3_12x10) problem3_run "${problem3_fine_cases[@]}"; problem3_table ;;
+  problem3_band) problem3_run "${problem3_band_cases[@]}"; problem3_table ;;
   problem4) if [[ -n $full ]]; then problem4_full; else problem4; fi ;;
   problem4_rates) problem4_rates ;;
   macro_step) macro_step ;;
   tables) wave_table; problem1_tables; problem1_ensemble_table; modulus_table; problem3_table; problem4_table
           $py "$here/macro_step.py" "$results" | tee "$results/macro_step.txt" ;;
   all) if [[ -n $full ]]; then problem3_full; problem4_full; else wave; problem1; modulus; problem3; problem4; problem4_rates; macro_step; fi ;;
-  *) sed -n '2,58p' "$0"; exit 2 ;;
+  *) sed -n '2,59p' "$0"; exit 2 ;;
 esac

@@ -5,9 +5,9 @@
 // runs as a continuous feedback at every check (it does not wait for a
 // relaxed state): its correction of the fluctuations w and rotations
 // retargets the frame, which reaches them, on the mean motion, at the next
-// check (schedule_timed_segment). Without it
-// the frame is an affine boundary, and the RVE is much stiffer (measured:
-// twice the quasi-static shear stress). The stresses returned are the mean
+// check (schedule_timed_segment). Without it the frame is an affine
+// boundary, and the RVE is much stiffer (measured: twice the quasi-static
+// shear stress). The stresses returned are the mean
 // over the solve's checks (a box filter over the macro step), so that the
 // DEM's high-frequency noise does not reach the macro solution. With
 // timed_servo integral (the default) the servo has integral action: under

@@ -37,31 +37,60 @@ using namespace dealii;
 namespace
 {
 /**
- * The RVE of subsection Imperfection: its factory (prepared like the others)
- * and the IP nearest to 'Point' (the lowest number among equally near ones);
- * none if 'Packing' is empty. Says which IP on @p out.
+ * The RVEs of subsection Imperfection: their factory (prepared like the
+ * others) and their IPs: every IP in the box 'Size' around 'Point' (an
+ * empty box is an error), or without a box the one nearest 'Point' (the
+ * lowest number among equally near ones); none if 'Packing' is empty. Says
+ * which IPs on @p out.
  */
 template <int dim>
 SeedRve<dim> make_seed_rve(const Parameters& prm, const std::vector<IpState<dim>>& ip,
                            const RvePreparation& preparation, ConditionalOStream& out)
 {
-  if (!prm.imperfection.active())
+  const Imperfection& imp = prm.imperfection;
+  if (!imp.active())
     return {};
-  RveParameters rve = prm.rve;
-  rve.packing = prm.imperfection.packing;
   SeedRve<dim> seed;
-  seed.factory = prepare_rves<dim>(make_servo_rve_factory<dim>(rve.setup("none"), prm.material.history), preparation);
-  double nearest = std::numeric_limits<double>::infinity();
-  for (std::size_t p = 0; p < ip.size(); ++p)
+  const auto offset = [&](std::size_t p, unsigned int d) { return ip[p].position[d] - imp.point[d]; };
+  std::ostringstream where;
+  if (imp.box())
   {
-    double d2 = 0.0;
+    for (std::size_t p = 0; p < ip.size(); ++p)
+    {
+      bool inside = true;
+      for (unsigned int d = 0; d < dim; ++d) // edges included, to rounding of the positions
+        inside = inside && std::abs(offset(p, d)) <= 0.5 * imp.size[d] * (1.0 + 1e-12);
+      if (inside)
+        seed.ips.push_back(p);
+    }
     for (unsigned int d = 0; d < dim; ++d)
-      d2 += (ip[p].position[d] - prm.imperfection.point[d]) * (ip[p].position[d] - prm.imperfection.point[d]);
-    if (d2 < nearest)
-      nearest = d2, seed.ip = p;
+      where << (d ? " x " : "") << imp.size[d];
+    if (seed.ips.empty())
+      throw std::runtime_error("subsection Imperfection: the box 'Size' = " + where.str() + " m around 'Point' (" +
+                               std::to_string(imp.point[0]) + ", " + std::to_string(imp.point[1]) +
+                               (dim == 3 ? ", " + std::to_string(imp.point[2]) : std::string()) +
+                               ") holds no quadrature point; enlarge it, or set 'Size' = 0, 0" +
+                               (dim == 3 ? ", 0" : "") + " for the IP nearest 'Point'");
+    out << "imperfection: " << seed.ips.size() << " IP(s) in the box " << where.str() << " m around 'Point'";
   }
-  out << "imperfection: IP " << seed.ip << " at (" << ip[seed.ip].position << "), " << std::sqrt(nearest)
-      << " m from 'Point', gets the packing " << prm.imperfection.packing << std::endl;
+  else
+  {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t p = 0; p < ip.size(); ++p)
+    {
+      double d2 = 0.0;
+      for (unsigned int d = 0; d < dim; ++d)
+        d2 += offset(p, d) * offset(p, d);
+      if (d2 < nearest)
+        nearest = d2, seed.ips = {p};
+    }
+    out << "imperfection: IP " << seed.ips[0] << " at (" << ip[seed.ips[0]].position << "), " << std::sqrt(nearest)
+        << " m from 'Point'";
+  }
+  out << ", gets the packing " << imp.packing << std::endl;
+  RveParameters rve = prm.rve;
+  rve.packing = imp.packing;
+  seed.factory = prepare_rves<dim>(make_servo_rve_factory<dim>(rve.setup("none"), prm.material.history), preparation);
   return seed;
 }
 } // namespace

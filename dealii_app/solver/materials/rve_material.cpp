@@ -21,7 +21,8 @@ std::vector<QuadraturePoint> quadrature_points(const std::vector<IpState<dim>>& 
       q[p].position[d] = points[p].position[d];
   }
   if (seed.factory)
-    q.at(seed.ip).factory = 1;
+    for (const std::size_t p : seed.ips)
+      q.at(p).factory = 1;
   return q;
 }
 

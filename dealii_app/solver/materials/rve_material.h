@@ -14,12 +14,12 @@
 
 namespace fe2dem::macro
 {
-/// One IP whose RVE another factory builds (subsection Imperfection); none if @p factory is null.
+/// The IPs whose RVEs another factory builds (subsection Imperfection); none if @p factory is null.
 template <int dim>
 struct SeedRve
 {
   std::shared_ptr<const RveFactory<dim>> factory;
-  std::size_t ip = 0;
+  std::vector<std::size_t> ips;
 };
 
 template <int dim>
@@ -28,7 +28,7 @@ class RveMaterial : public Material<dim>
 public:
   /**
    * Builds (or, with @p states, restores) the RVEs of @p points over
-   * MPI_COMM_WORLD, all from @p factory but the one of @p seed.
+   * MPI_COMM_WORLD, all from @p factory but those of @p seed.
    * @param stability_modulus, density  give the wave speed sqrt(M/rho)
    * @param skip_tolerance  RvePool::set_skip_tolerance
    */

@@ -120,15 +120,19 @@ struct Nonlocal
 };
 
 /**
- * subsection Imperfection: one RVE built from another packing, e.g. the
- * RVE's packing with particles removed, which seeds a shear band ([LSYF]
- * §3.2, problem 3: 25 particles removed from one RVE).
+ * subsection Imperfection: RVEs built from another packing, e.g. the RVE's
+ * packing with particles removed, which seed a shear band ([LSYF] §3.2,
+ * problem 3: 25 particles removed from one RVE): the one IP nearest a
+ * point, or every IP in a box around it (a weak region the same on every
+ * mesh).
  */
 struct Imperfection
 {
   std::string packing;           ///< packing prefix (absolute); empty: none
-  std::array<double, 3> point{}; ///< reference position [m]; the IP nearest to it gets the packing
+  std::array<double, 3> point{}; ///< reference position [m]: the nearest IP, or the box's centre
+  std::array<double, 3> size{};  ///< the box's edge lengths [m]; all 0: the IP nearest @p point
   bool active() const { return !packing.empty(); }
+  bool box() const { return size[0] > 0.0; }
   static void declare_parameters(dealii::ParameterHandler& prm);
   /// @param base the parameter file's folder (relative prefixes); @param dim the number of coordinates
   void parse_parameters(dealii::ParameterHandler& prm, const std::string& base, unsigned int dim);

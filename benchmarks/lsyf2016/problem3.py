@@ -51,16 +51,22 @@ CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "p
          "R = 20 mm, local elastic 0.5 MPa, 12x10": "problem3_R0.02_le0.5_12x10",
          "R = 10 mm, local elastic 2 MPa, 12x10": "problem3_R0.01_le2_12x10",
          "R = 15 mm, local elastic 2 MPa, 12x10": "problem3_R0.015_le2_12x10",
-         "R = 15 mm, local elastic 2 MPa": "problem3_R0.015_le2"}
+         "R = 15 mm, local elastic 2 MPa": "problem3_R0.015_le2",
+         "R = 20 mm, local elastic 2 MPa": "problem3_R0.02_le2",
+         "R = 6.75 mm, local elastic 2 MPa, 12x15": "problem3_R0.00675_le2_12x15",
+         "R = 15 mm, local elastic 2 MPa, 12x10, seed box": "problem3_R0.015_le2_12x10_box"}
 # the band width against R and the mesh: (R in mm, element height in mm, case)
-# The macro step is fe2dem's default (5 us on 12x5, 2 us on 12x10) but where the case names it
-# (run.sh problem3_step_cases and problem3_band_cases; README, 'The rate, and the macro step')
+# The macro step is fe2dem's default (5 us on 12x5, 2 us on 12x10, 1 us on 12x15) but where the
+# case names it (run.sh problem3_step_cases, problem3_band_cases, problem3_scaled_cases; README,
+# 'The rate, and the macro step')
 RADII = [(0.0, 10.1, "local"), (15.0, 10.1, "R = 15 mm, local elastic 0.5 MPa"),
          (20.0, 10.1, "R = 20 mm, local elastic 0.5 MPa"), (25.0, 10.1, "R = 25 mm, local elastic 0.5 MPa"),
          (0.0, 5.06, "local, 12x10"), (10.0, 5.06, "R = 10 mm, local elastic 0.5 MPa, 12x10"),
          (20.0, 5.06, "R = 20 mm, local elastic 0.5 MPa, 12x10"),
          (10.0, 5.06, "R = 10 mm, local elastic 2 MPa, 12x10"), (15.0, 5.06, "R = 15 mm, local elastic 2 MPa, 12x10"),
-         (15.0, 10.1, "R = 15 mm, local elastic 2 MPa")]
+         (15.0, 10.1, "R = 15 mm, local elastic 2 MPa"), (20.0, 10.1, "R = 20 mm, local elastic 2 MPa"),
+         (6.75, 3.37, "R = 6.75 mm, local elastic 2 MPa, 12x15"),
+         (15.0, 5.06, "R = 15 mm, local elastic 2 MPa, 12x10, seed box")]
 # the band's directions in simple shear: along the shear, within 20 degrees of x (the local runs' band
 # is at 4 degrees); among all directions the finder can return a hot spot around the weak RVE
 ALONG_X = list(range(0, 21)) + list(range(160, 180))
@@ -75,8 +81,8 @@ OFF_BAND = 0.012  # m from the weak IP's row: outside the local runs' bands on b
 def read(case_dir):
     """Everything of one run's history.h5 that the tables need."""
     with h5py.File(os.path.join(case_dir, "out", "history.h5"), "r") as h:
-        d = {k: h[k][()] for k in ("ip_position", "sigma", "packing_fraction", "coordination", "contacts",
-                                   "sliding_contacts", "step", "F")}
+        d = {k: h[k][()] for k in ("ip_position", "sigma", "sigma_lw", "packing_fraction", "coordination",
+                                   "contacts", "sliding_contacts", "step", "F")}
         d["F_nonlocal"] = h["F_nonlocal"][()] if "F_nonlocal" in h else d["F"]  # what the RVEs saw
         d["mean_rotation"] = h["mean_rotation"][()] if "mean_rotation" in h else None
     d["gamma_macro"] = SHEAR * d["step"] / LOAD_STEPS  # load steps are equal in time; a stopped run has fewer
@@ -95,6 +101,43 @@ def shear_increment(F, rows):
     F = F.reshape(rows, -1, 3, 3)
     dF = F[-1] - F[-1 - BAND_ROWS]
     return dF[:, 0, 1] + dF[:, 1, 0]
+
+
+def weak_ips(d):
+    """The IPs of the weakened packing (one, or those of subsection Imperfection's box): a solid
+    fraction after the preparation more than 0.02 below the median (25 of 178 inner spheres
+    removed: about 0.045 lower; tests/check_imperfection.py)."""
+    phi = d["packing_fraction"][0]
+    return np.flatnonzero(phi < np.median(phi) - 0.02)
+
+
+def interaction_radius(case_dir):
+    """subsection Nonlocal's 'Interaction radius' of the run's macro.prm in m (0: local)."""
+    m = re.search(r"set Interaction radius\s*=\s*(\S+)", open(os.path.join(case_dir, "macro.prm")).read())
+    return float(m.group(1)) if m else 0.0
+
+
+def print_seed(results, done):
+    """The weak RVEs at the end: their share of their own average (the bell weights (1 - r^2/R^2)^2
+    of the weak IPs over those of all IPs within R of the first weak one; 1 when local), the
+    pressure and shear stress of their RVEs (Love-Weber) at the start and the end, and the volume
+    change of the element (det F) against the one the RVE saw (det F_nonlocal)."""
+    print("\n## the weak RVE(s): their share of their own average, and what their RVE saw")
+    print("| case | weak IPs | share of the weak IPs in the average | RVE's p, first row -> end (kPa) "
+          "| RVE's tau at the end (kPa) | element's det F | RVE's det F |")
+    print("|---|---|---|---|---|---|---|")
+    for k, d in done.items():
+        weak = weak_ips(d)
+        radius = interaction_radius(os.path.join(results, CASES[k]))
+        x = d["ip_position"][:, :2]
+        r = np.linalg.norm(x - x[weak[0]], axis=1)
+        a = np.where(r < radius, (1 - (r / radius) ** 2) ** 2, 0.0) if radius > 0 else (r == 0).astype(float)
+        share = a[weak].sum() / a.sum()
+        s = d["sigma_lw"].reshape(len(d["step"]), -1, 3, 3)[:, weak[0]]
+        p = -np.trace(s, axis1=1, axis2=2) / 3
+        F, Fn = (d[f].reshape(len(d["step"]), -1, 3, 3)[-1, weak[0]] for f in ("F", "F_nonlocal"))
+        print(f"| {k} | {len(weak)} | {share:.2f} | {p[0] / 1e3:.0f} -> {p[-1] / 1e3:.0f} | {abs(s[-1, 0, 1]) / 1e3:.0f} "
+              f"| {np.linalg.det(F):.3f} | {np.linalg.det(Fn):.3f} |")
 
 
 def weak_ip(d):
@@ -226,6 +269,8 @@ def main():
         off = np.abs(d["ip_position"][:, 1] - d["ip_position"][weak, 1]) > OFF_BAND
         print(f"| {k} | {g[weak]:.4f} | {g.mean():.4f} | {g.max():.4f} | {g.min():.4f} "
               f"| {int((g < 0).sum())} of {len(g)} | {g[off].std():.4f} | {(g - g_seen)[off].std():.4f} |")
+
+    print_seed(results, done)
 
     print("\n## cost (on the 2-core VM, walls shared with other runs)")
     print("| case | ranks | wall (s) | RVEs | DEM steps (all RVEs) |")

@@ -37,9 +37,12 @@
 #              lsyf_300_weak (problem3.prm), local and nonlocal with R = 15
 #              and 25 mm, the local elastic formulation with R = 15-25 mm;
 #              local on 12x5 at two more macro steps; the problem3_band
-#              cases too; 2 ranks each; problem3.py's tables and PNGs
+#              and problem3_scaled cases too; 2 ranks each; problem3.py's tables and PNGs
 #   problem3_band  problem 3 on 12x10x1 (local, local elastic R = 10-20 mm, E = 0.5 and
 #              2 MPa) and on 12x5 with E = 2 MPa: the band against R and the mesh
+#   problem3_scaled  problem 3 with E = 2 MPa at R = 2 element heights: R = 20 and
+#              6.75 mm on 12x5 and 12x15 (the band against R, mesh and seed scaled with R),
+#              and R = 15 mm on 12x10 with the seed a region of one 12x5 element
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
 #   macro_step one element at 4 /s with the macro step and the RVE's
@@ -56,11 +59,11 @@
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
 # result exists and whose parameter file is unchanged is not run again.
 #
-#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem4|problem4_rates|macro_step|tables|all [--full]
+#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem4|problem4_rates|macro_step|tables|all [--full]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-[[ $# -eq 2 || ( $# -eq 3 && $3 == --full ) ]] || { sed -n '2,59p' "$0"; exit 2; }
+[[ $# -eq 2 || ( $# -eq 3 && $3 == --full ) ]] || { sed -n '2,/^#   run.sh BUILD/p' "$0"; exit 2; }
 build="$(cd "$1" && pwd)"
 what=$2
 full=${3:-}
@@ -336,6 +339,19 @@ problem3_step_cases=("problem3_R0_dt2us 12 5 2e-6" "problem3_R0_dt1us 12 5 1e-6"
 problem3_band_cases=("problem3_R0_12x10 12 10 0" "problem3_R0.02_le0.5_12x10 12 10 0.02 5e5"
                      "problem3_R0.01_le0.5_12x10 12 10 0.01 5e5" "problem3_R0.01_le2_12x10 12 10 0.01 2e6"
                      "problem3_R0.015_le2_12x10 12 10 0.015 2e6" "problem3_R0.015_le2 12 5 0.015 2e6")
+# ... and the band against R with the mesh and the seed scaled with R (session 36): E = 2 MPa at
+# R = 2 element heights (the window where the 12x10 elements followed their RVEs), R = 20 mm on
+# 12x5 and 6.75 mm ([LSYF]'s 2R = 13.5 mm) on 12x15 (the weak RVE is one element, so the seed's
+# height scales with R too; the specimen does not); R = 10 mm on 12x10 is problem3_band's. 12x15's
+# elements (3.4 mm) bring the default step to 1 us; R = 5 mm on 12x20 would take about 90 min here
+problem3_scaled_cases=("problem3_R0.02_le2 12 5 0.02 2e6" "problem3_R0.00675_le2_12x15 12 15 0.00675 2e6")
+# ... and the seed as a region of a fixed size (subsection Imperfection, 'Size'): the one 12x5
+# element around 'Point' (two IPs on 12x10), at R = 15 mm with E = 2 MPa on 12x10, where one weak IP
+# (a share 0.21 of its own average) lost its pressure (session 36)
+seed_box='s#^  set Point   = .*#&\n  set Size    = 0.0098, 0.0101, 0.0127#'
+problem3_seed_box() {
+  band_case problem3_R0.015_le2_12x10_box "$here/problem3.prm" "$(problem3_edit 12 10 0.015 2e6); $seed_box"
+}
 # problem3_edit CELLS_X CELLS_Y RADIUS [E]: problem3.prm's substitutions
 problem3_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; ${4:+$(local_elastic "$4")}"; }
 # submit_full NAME PRM [sed expression]: the case at the paper's size (lsyf_4096) in
@@ -385,7 +401,8 @@ problem3() {
     band_case "$name" "$here/problem3.prm" "$(problem3_edit "$x" "$y" 0)
       s#^  set Analysis = dynamic#  set Analysis = dynamic\n  set Time step = $dt#"
   done
-  problem3_run "${problem3_band_cases[@]}"
+  problem3_run "${problem3_band_cases[@]}" "${problem3_scaled_cases[@]}"
+  problem3_seed_box
   problem3_table
 }
 problem3_table() {
@@ -443,11 +460,12 @@ case "$what" in
   modulus) modulus ;;
   problem3) if [[ -n $full ]]; then problem3_full; else problem3; fi ;;
   problem3_band) problem3_run "${problem3_band_cases[@]}"; problem3_table ;;
+  problem3_scaled) problem3_run "${problem3_scaled_cases[@]}"; problem3_seed_box; problem3_table ;;
   problem4) if [[ -n $full ]]; then problem4_full; else problem4; fi ;;
   problem4_rates) problem4_rates ;;
   macro_step) macro_step ;;
   tables) wave_table; problem1_tables; problem1_ensemble_table; modulus_table; problem3_table; problem4_table
           $py "$here/macro_step.py" "$results" | tee "$results/macro_step.txt" ;;
   all) if [[ -n $full ]]; then problem3_full; problem4_full; else wave; problem1; modulus; problem3; problem4; problem4_rates; macro_step; fi ;;
-  *) sed -n '2,59p' "$0"; exit 2 ;;
+  *) sed -n '2,/^#   run.sh BUILD/p' "$0"; exit 2 ;;
 esac

@@ -54,9 +54,10 @@ CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "p
          "R = 15 mm, local elastic 2 MPa": "problem3_R0.015_le2",
          "R = 20 mm, local elastic 2 MPa": "problem3_R0.02_le2",
          "R = 6.75 mm, local elastic 2 MPa, 12x15": "problem3_R0.00675_le2_12x15",
+         "R = 5 mm, local elastic 2 MPa, 12x20": "problem3_R0.005_le2_12x20",
          "R = 15 mm, local elastic 2 MPa, 12x10, seed box": "problem3_R0.015_le2_12x10_box"}
 # the band width against R and the mesh: (R in mm, element height in mm, case)
-# The macro step is fe2dem's default (5 us on 12x5, 2 us on 12x10, 1 us on 12x15) but where the
+# The macro step is fe2dem's default (5 us on 12x5, 2 us on 12x10 and 12x15, 1 us on 12x20) but where the
 # case names it (run.sh problem3_step_cases, problem3_band_cases, problem3_scaled_cases; README,
 # 'The rate, and the macro step')
 RADII = [(0.0, 10.1, "local"), (15.0, 10.1, "R = 15 mm, local elastic 0.5 MPa"),
@@ -65,7 +66,7 @@ RADII = [(0.0, 10.1, "local"), (15.0, 10.1, "R = 15 mm, local elastic 0.5 MPa"),
          (20.0, 5.06, "R = 20 mm, local elastic 0.5 MPa, 12x10"),
          (10.0, 5.06, "R = 10 mm, local elastic 2 MPa, 12x10"), (15.0, 5.06, "R = 15 mm, local elastic 2 MPa, 12x10"),
          (15.0, 10.1, "R = 15 mm, local elastic 2 MPa"), (20.0, 10.1, "R = 20 mm, local elastic 2 MPa"),
-         (6.75, 3.37, "R = 6.75 mm, local elastic 2 MPa, 12x15"),
+         (6.75, 3.37, "R = 6.75 mm, local elastic 2 MPa, 12x15"), (5.0, 2.53, "R = 5 mm, local elastic 2 MPa, 12x20"),
          (15.0, 5.06, "R = 15 mm, local elastic 2 MPa, 12x10, seed box")]
 # the band's directions in simple shear: along the shear, within 20 degrees of x (the local runs' band
 # is at 4 degrees); among all directions the finder can return a hot spot around the weak RVE
@@ -111,15 +112,23 @@ def weak_ips(d):
     return np.flatnonzero(phi < np.median(phi) - 0.02)
 
 
-def interaction_radius(case_dir):
-    """subsection Nonlocal's 'Interaction radius' of the run's macro.prm in m (0: local)."""
-    m = re.search(r"set Interaction radius\s*=\s*(\S+)", open(os.path.join(case_dir, "macro.prm")).read())
-    return float(m.group(1)) if m else 0.0
+def nonlocal_weights(case_dir, r):
+    """The unnormalised weights of subsection Nonlocal in the run's macro.prm at distances @p r (m):
+    Wendland's (1 - r/R)^4 (4 r/R + 1), fe2dem's default, or the bell (1 - r^2/R^2)^2; zero
+    beyond R; with no radius (local) 1 at r = 0 and 0 elsewhere."""
+    text = open(os.path.join(case_dir, "macro.prm")).read()
+    m = re.search(r"set Interaction radius\s*=\s*(\S+)", text)
+    radius = float(m.group(1)) if m else 0.0
+    if radius <= 0:
+        return (r == 0).astype(float)
+    q = np.minimum(r / radius, 1.0)
+    bell = re.search(r"set Weight\s*=\s*bell", text) is not None
+    return (1 - q ** 2) ** 2 if bell else (1 - q) ** 4 * (4 * q + 1)
 
 
 def print_seed(results, done):
-    """The weak RVEs at the end: their share of their own average (the bell weights (1 - r^2/R^2)^2
-    of the weak IPs over those of all IPs within R of the first weak one; 1 when local), the
+    """The weak RVEs at the end: their share of their own average (the run's weights of the weak IPs
+    over those of all IPs, seen from the first weak one; 1 when local), the
     pressure and shear stress of their RVEs (Love-Weber) at the start and the end, and the volume
     change of the element (det F) against the one the RVE saw (det F_nonlocal)."""
     print("\n## the weak RVE(s): their share of their own average, and what their RVE saw")
@@ -128,10 +137,8 @@ def print_seed(results, done):
     print("|---|---|---|---|---|---|---|")
     for k, d in done.items():
         weak = weak_ips(d)
-        radius = interaction_radius(os.path.join(results, CASES[k]))
         x = d["ip_position"][:, :2]
-        r = np.linalg.norm(x - x[weak[0]], axis=1)
-        a = np.where(r < radius, (1 - (r / radius) ** 2) ** 2, 0.0) if radius > 0 else (r == 0).astype(float)
+        a = nonlocal_weights(os.path.join(results, CASES[k]), np.linalg.norm(x - x[weak[0]], axis=1))
         share = a[weak].sum() / a.sum()
         s = d["sigma_lw"].reshape(len(d["step"]), -1, 3, 3)[:, weak[0]]
         p = -np.trace(s, axis1=1, axis2=2) / 3

@@ -40,8 +40,8 @@
 #              and problem3_scaled cases too; 2 ranks each; problem3.py's tables and PNGs
 #   problem3_band  problem 3 on 12x10x1 (local, local elastic R = 10-20 mm, E = 0.5 and
 #              2 MPa) and on 12x5 with E = 2 MPa: the band against R and the mesh
-#   problem3_scaled  problem 3 with E = 2 MPa at R = 2 element heights: R = 20 and
-#              6.75 mm on 12x5 and 12x15 (the band against R, mesh and seed scaled with R),
+#   problem3_scaled  problem 3 with E = 2 MPa at R = 2 element heights: R = 20, 6.75
+#              and 5 mm on 12x5, 12x15, 12x20 (the band against R, mesh and seed scaled with R),
 #              and R = 15 mm on 12x10 with the seed a region of one 12x5 element
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
@@ -342,9 +342,10 @@ problem3_band_cases=("problem3_R0_12x10 12 10 0" "problem3_R0.02_le0.5_12x10 12 
 # ... and the band against R with the mesh and the seed scaled with R (session 36): E = 2 MPa at
 # R = 2 element heights (the window where the 12x10 elements followed their RVEs), R = 20 mm on
 # 12x5 and 6.75 mm ([LSYF]'s 2R = 13.5 mm) on 12x15 (the weak RVE is one element, so the seed's
-# height scales with R too; the specimen does not); R = 10 mm on 12x10 is problem3_band's. 12x15's
-# elements (3.4 mm) bring the default step to 1 us; R = 5 mm on 12x20 would take about 90 min here
-problem3_scaled_cases=("problem3_R0.02_le2 12 5 0.02 2e6" "problem3_R0.00675_le2_12x15 12 15 0.00675 2e6")
+# height scales with R too; the specimen does not), 5 mm on 12x20 (its 2.5 mm elements bring the
+# default step to 1 us: about 70 min here); R = 10 mm on 12x10 is problem3_band's
+problem3_scaled_cases=("problem3_R0.02_le2 12 5 0.02 2e6" "problem3_R0.00675_le2_12x15 12 15 0.00675 2e6"
+                       "problem3_R0.005_le2_12x20 12 20 0.005 2e6")
 # ... and the seed as a region of a fixed size (subsection Imperfection, 'Size'): the one 12x5
 # element around 'Point' (two IPs on 12x10), at R = 15 mm with E = 2 MPa on 12x10, where one weak IP
 # (a share 0.21 of its own average) lost its pressure (session 36)

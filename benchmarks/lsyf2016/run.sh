@@ -348,7 +348,7 @@ problem3_scaled_cases=("problem3_R0.02_le2 12 5 0.02 2e6" "problem3_R0.00675_le2
                        "problem3_R0.005_le2_12x20 12 20 0.005 2e6")
 # ... and the seed as a region of a fixed size (subsection Imperfection, 'Size'): the one 12x5
 # element around 'Point' (two IPs on 12x10), at R = 15 mm with E = 2 MPa on 12x10, where one weak IP
-# (a share 0.21 of its own average) lost its pressure (session 36)
+# (a share 0.46 of its own average, Wendland's weights) lost its pressure (session 36)
 seed_box='s#^  set Point   = .*#&\n  set Size    = 0.0098, 0.0101, 0.0127#'
 problem3_seed_box() {
   band_case problem3_R0.015_le2_12x10_box "$here/problem3.prm" "$(problem3_edit 12 10 0.015 2e6); $seed_box"

@@ -72,7 +72,6 @@ RADII = [(0.0, 10.1, "local"), (15.0, 10.1, "R = 15 mm, local elastic 0.5 MPa"),
 # is at 4 degrees); among all directions the finder can return a hot spot around the weak RVE
 ALONG_X = list(range(0, 21)) + list(range(160, 180))
 NU_E = 0.2  # C_e's Poisson ratio (run.sh local_elastic)
-WEAK_POINT = np.array([0.054, 0.025])  # problem3.prm, subsection Imperfection
 HEIGHT, SHEAR = 0.0506, 0.08           # the top's displacement is SHEAR * HEIGHT at the end
 LOAD_STEPS = 16                        # problem3.prm: rows at SHEAR * step / LOAD_STEPS
 BAND_ROWS = 4
@@ -148,8 +147,8 @@ def print_seed(results, done):
 
 
 def weak_ip(d):
-    """The index of the weakened RVE's IP (the one nearest WEAK_POINT, as fe2dem chooses it)."""
-    return int(np.argmin(np.linalg.norm(d["ip_position"][:, :2] - WEAK_POINT, axis=1)))
+    """The index of the (first) weakened RVE's IP."""
+    return int(weak_ips(d)[0])
 
 
 def ip_map(fig, ax, x, values, weak, title, cmap, weak_marker):

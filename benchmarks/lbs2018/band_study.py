@@ -5,7 +5,8 @@ accumulated after the peak rather than on one load step.
 
 Usage (Debian's python3 with numpy, matplotlib, h5py):
   run.sh mesh_2x4_quarter mesh_4x8_quarter mesh_4x8_op_quarter mesh_8x16_op_quarter \
-         nonlocal_2x4_le_quarter nonlocal_4x8_le_quarter nonlocal_2x4_le1e6_quarter nonlocal_4x8_le1e6_quarter
+         nonlocal_2x4_le_quarter nonlocal_4x8_le_quarter nonlocal_2x4_le1e6_quarter nonlocal_4x8_le1e6_quarter \
+         nonlocal_4x8_op_le_quarter nonlocal_8x16_op_le_quarter nonlocal_8x16_op_le1e6_quarter
   band_study.py        (cases not in runs/ are left out of every table)
 
 Reads runs/CASE/{history.h5,summary.csv} of the cases below (run.sh; stage 2
@@ -21,6 +22,12 @@ results/band_study.png, and prints the README's tables.
   7.5 %). Both were fixed before the runs, as in [LSYF] problem 4
   (../lsyf2016/README.md). One load step's increment (nonlocal_study.py) is
   too diffuse on this specimen to carry a band.
+- The half-share width (band_width.half_share_width, chosen in session 37 after the runs, where
+  the profile of the diffuse increments of the local elastic runs does not fall to half its peak
+  on both sides inside this 10 mm wide specimen): the smallest share of the IPs holding half of
+  the increment, read as the width of a uniform band crossing the specimen at the run's Coulomb
+  angle 45 deg + phi / 2 (phi = asin of its peak stress ratio); the CSV rows "half share S" hold
+  it, with that angle. Checked on known bands by ctest benchmark_band_width_known_bands.
 - The band's softening modulus in shear of each local run,
   H_s = (tau_peak - tau_end) / gamma_band, tau = (|sigma22| - |sigma11|) / 2
   of the IPs' mean stress, gamma_band the largest IP shear strain increment
@@ -55,8 +62,15 @@ FAMILIES = [("local", [("mesh_2x4_quarter", "2x4", 5.0), ("mesh_4x8_quarter", "4
             ("local elastic R = 2.5 mm, E = 1e6 N/m", [("nonlocal_2x4_le1e6_quarter", "2x4", 5.0),
                                                        ("nonlocal_4x8_le1e6_quarter", "4x8", 2.5),
                                                        ("nonlocal_8x16_op_le1e6_quarter", "8x16, one point", 1.25)]),
-            ("local, one point", [("mesh_4x8_op_quarter", "4x8, one point", 2.5)])]
+            ("local, one point", [("mesh_4x8_op_quarter", "4x8, one point", 2.5),
+                                  ("mesh_8x16_op_quarter", "8x16, one point", 1.25)]),
+            # 4x8 one point with R = 2.5 mm: the neighbours sit at R, where the weight is 0, so F_nonlocal = F
+            # and the run is local but for rounding (README, "The band width over the meshes")
+            ("local elastic R = 2.5 mm, one point",
+             [("nonlocal_4x8_op_le_quarter", "4x8, one point, no neighbours", 2.5),
+              ("nonlocal_8x16_op_le_quarter", "8x16, one point", 1.25)])]
 INTERVALS = [(0.09, 0.10), (0.075, 0.10)]  # axial strain from, to
+HEIGHT = 0.02                               # lbs2018.prm: the specimen's height (m)
 C_E = (6e6, 1e6), 0.2                      # run.sh's _le and _le1e6: E (N/m); Poisson ratio
 
 
@@ -108,14 +122,16 @@ def main():
     finished = {c for _, c, _, _ in done}
 
     print("\n| family | mesh | element | ratio at the peak | at 10 % | "
-          + " | ".join(f"band {100 * a:g}-{100 * b:g} %, inclined | all directions" for a, b in INTERVALS) + " |")
-    print("|---" * (5 + 2 * len(INTERVALS)) + "|")
+          + " | ".join(f"band {100 * a:g}-{100 * b:g} %, inclined | all directions | half-share width"
+                       for a, b in INTERVALS) + " |")
+    print("|---" * (5 + 3 * len(INTERVALS)) + "|")
     maps = []
     with open(os.path.join(results, "band_study.csv"), "w") as fh:
         fh.write("case,family,mesh,element_mm,from_axial_strain,to_axial_strain,directions,band_width_mm,"
                  "band_angle_deg\n")
         for fam, c, m, h in done:
             eps, ratio, _ = stage2(c)
+            coulomb = bw.coulomb_angle(ratio.max())  # the half-share width's band angle
             cells = []
             for a, b in INTERVALS:
                 pts, g = increment(c, a, b)
@@ -124,13 +140,17 @@ def main():
                     fh.write(f"{c},{fam},{m},{h:g},{a:g},{b:g},{name},{1e3 * w:.4g},{ang:.0f}\n")
                     cells.append(f"{width_text(w)} at {ang:.0f} deg")
                     if (a, b, name) == (*INTERVALS[-1], "inclined"):
-                        maps.append((fam, m, pts, g, w, ang))
+                        maps.append((fam, m, pts, g, w, ang, bw.half_share_width(g, HEIGHT, coulomb)))
+                w = bw.half_share_width(g, HEIGHT, coulomb)
+                fh.write(f"{c},{fam},{m},{h:g},{a:g},{b:g},half share {bw.half_share(g):.4f},{1e3 * w:.4g},"
+                         f"{coulomb:.0f}\n")
+                cells.append(f"{width_text(w)} ({bw.half_share(g):.3f})")
             print(f"| {fam} | {m} | {h:g} mm | {ratio.max():.3f} at {100 * eps[np.argmax(ratio)]:.3g} % | "
                   f"{ratio[-1]:.3f} | " + " | ".join(cells) + " |")
 
     print("\n| family | meshes | peak of the mean at | spread after it: mean | largest |\n|---|---|---|---|---|")
     for fam, cases in FAMILIES:
-        for meshes in (cases[:2], cases):
+        for meshes in ([cases[:2], cases] if len(cases) > 2 else [cases]):
             if len(meshes) < 2 or any(c not in finished for c, _, _ in meshes):
                 continue
             pts, _ = spread_after_peak({c: analyse.curve(c) for c, _, _ in meshes}, [c for c, _, _ in meshes])
@@ -142,11 +162,11 @@ def main():
     mu_e = [E / (2 * (1 + C_E[1])) for E in C_E[0]]
     print("\n| local run | peak at | tau peak -> end (kN/m) | gamma in the band | H_s (MN/m) | "
           + " | ".join(f"mu_e / H_s, E = {E:g} N/m" for E in C_E[0]) + " |\n" + "|---" * (5 + len(mu_e)) + "|")
-    for fam, c, m, h in done:
-        if fam.startswith("local") and not fam.startswith("local elastic"):
-            e, t0, t1, g, hs = softening_modulus(c)
-            print(f"| {m} | {100 * e:.3g} % | {t0 / 1e3:.1f} -> {t1 / 1e3:.1f} | {g:.3f} | {hs / 1e6:.3f} | "
-                  + " | ".join(f"{mu / hs:.1f}" for mu in mu_e) + " |")
+    local_runs = {c: m for fam, c, m, _ in done if not fam.startswith("local elastic")}  # once each
+    for c, m in local_runs.items():
+        e, t0, t1, g, hs = softening_modulus(c)
+        print(f"| {m} | {100 * e:.3g} % | {t0 / 1e3:.1f} -> {t1 / 1e3:.1f} | {g:.3f} | {hs / 1e6:.3f} | "
+              + " | ".join(f"{mu / hs:.1f}" for mu in mu_e) + " |")
 
     fams = [f for f, _ in FAMILIES if any(d[0] == f for d in done)]
     cols = max(sum(d[0] == f for d in done) for f in fams)
@@ -158,10 +178,11 @@ def main():
             if col >= len(mine):
                 a.axis("off")
                 continue
-            _, m, pts, g, w, ang = mine[col]
+            _, m, pts, g, w, ang, w_half = mine[col]
             sc = a.scatter(1e3 * pts[:, 0], 1e3 * pts[:, 1], c=g, s=2400 / len(pts) ** 0.9 + 4, marker="s",
                            cmap="viridis")
-            a.set_title(f"{fam}\n{m}: band {width_text(w)} at {ang:.0f} deg", fontsize=7)
+            a.set_title(f"{fam}\n{m}: band {width_text(w)} at {ang:.0f} deg,\nhalf-share width {width_text(w_half)}",
+                        fontsize=7)
             a.set_aspect("equal")
             a.set_xlim(0, 10)
             a.set_ylim(0, 20)

@@ -132,6 +132,31 @@ def band_width(points, gamma, bin=None, band_angles=range(180)):
     return width, (deg + 90) % 180, (centres, means)
 
 
+def half_share(gamma):
+    """The smallest share of the points that holds half of the summed gamma (points of equal area:
+    the IPs of a structured mesh, one point or 2x2 Gauss). 0.5 for a uniform field; for a uniform
+    band over zero, half the band's share of the specimen."""
+    g = np.sort(np.asarray(gamma, dtype=float))[::-1]
+    return (np.searchsorted(np.cumsum(g) / g.sum(), 0.5) + 1) / len(g)
+
+
+def half_share_width(gamma, height, angle_deg):
+    """The width of the uniform band, crossing the whole width of a specimen `height` tall at
+    `angle_deg` from x (its area: width x width of specimen / cos angle), that holds what the
+    half_share of gamma holds: 2 half_share height cos(angle). Exact for a uniform band over
+    zero that crosses both lateral edges; 1.146 FWHM for a Gaussian profile (its half lies
+    within +-0.674 standard deviations); a background adds to it, a band cut by a corner or at
+    another angle is misread by its shorter length or by the ratio of the cosines. It needs no
+    profile falling to half its peak on both sides inside the specimen, which band_width does."""
+    return 2.0 * half_share(gamma) * height * np.cos(np.radians(angle_deg))
+
+
+def coulomb_angle(stress_ratio):
+    """45 deg + phi / 2 from x (the minor stress) of a Coulomb band at the mobilised friction
+    angle phi = asin(stress_ratio), stress_ratio = |(s11 - s22) / (s11 + s22)|."""
+    return 45.0 + 0.5 * np.degrees(np.arcsin(stress_ratio))
+
+
 if __name__ == "__main__":
     if len(sys.argv) >= 5 and sys.argv[1] == "ips":
         pts, g = ip_field(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]))

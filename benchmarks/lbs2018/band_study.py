@@ -135,16 +135,15 @@ def main():
             cells = []
             for a, b in INTERVALS:
                 pts, g = increment(c, a, b)
+                share, w_half = bw.half_share(g), bw.half_share_width(g, HEIGHT, coulomb)
                 for name, angles in (("inclined", bw.INCLINED), ("all", range(180))):
                     w, ang, _ = bw.band_width(pts, g, band_angles=angles)
                     fh.write(f"{c},{fam},{m},{h:g},{a:g},{b:g},{name},{1e3 * w:.4g},{ang:.0f}\n")
                     cells.append(f"{width_text(w)} at {ang:.0f} deg")
                     if (a, b, name) == (*INTERVALS[-1], "inclined"):
-                        maps.append((fam, m, pts, g, w, ang, bw.half_share_width(g, HEIGHT, coulomb)))
-                w = bw.half_share_width(g, HEIGHT, coulomb)
-                fh.write(f"{c},{fam},{m},{h:g},{a:g},{b:g},half share {bw.half_share(g):.4f},{1e3 * w:.4g},"
-                         f"{coulomb:.0f}\n")
-                cells.append(f"{width_text(w)} ({bw.half_share(g):.3f})")
+                        maps.append((fam, m, pts, g, w, ang, w_half))
+                fh.write(f"{c},{fam},{m},{h:g},{a:g},{b:g},half share {share:.4f},{1e3 * w_half:.4g},{coulomb:.0f}\n")
+                cells.append(f"{width_text(w_half)} ({share:.3f})")
             print(f"| {fam} | {m} | {h:g} mm | {ratio.max():.3f} at {100 * eps[np.argmax(ratio)]:.3g} % | "
                   f"{ratio[-1]:.3f} | " + " | ".join(cells) + " |")
 

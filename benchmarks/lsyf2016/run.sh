@@ -43,6 +43,8 @@
 #   problem3_scaled  problem 3 with E = 2 MPa at R = 2 element heights: R = 20, 6.75
 #              and 5 mm on 12x5, 12x15, 12x20 (the band against R, mesh and seed scaled with R),
 #              and R = 15 mm on 12x10 with the seed a region of one 12x5 element
+#   problem3_fixed_r  problem 3 at a fixed R = 10 mm (E = 2 MPa) on 12x10 and 12x20, the seed
+#              a region of one 12x5 element: the band over meshes at a fixed R
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
 #   macro_step one element at 4 /s with the macro step and the RVE's
@@ -59,7 +61,7 @@
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
 # result exists and whose parameter file is unchanged is not run again.
 #
-#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem4|problem4_rates|macro_step|tables|all [--full]
+#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem3_fixed_r|problem4|problem4_rates|macro_step|tables|all [--full]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -350,9 +352,11 @@ problem3_scaled_cases=("problem3_R0.02_le2 12 5 0.02 2e6" "problem3_R0.00675_le2
 # element around 'Point' (two IPs on 12x10), at R = 15 mm with E = 2 MPa on 12x10, where one weak IP
 # (a share 0.46 of its own average, Wendland's weights) lost its pressure (session 36)
 seed_box='s#^  set Point   = .*#&\n  set Size    = 0.0098, 0.0101, 0.0127#'
-problem3_seed_box() {
-  band_case problem3_R0.015_le2_12x10_box "$here/problem3.prm" "$(problem3_edit 12 10 0.015 2e6); $seed_box"
-}
+problem3_seed_box_cases=("problem3_R0.015_le2_12x10_box 12 10 0.015 2e6")
+# ... and the band at a fixed R over meshes (session 38): R = 10 mm, E = 2 MPa, the seed box, on
+# 12x10 (R = 2 element heights, the seed two IPs) and 12x20 (4 heights, four IPs; the default step
+# is 1 us there: about 70 min here)
+problem3_fixed_r_cases=("problem3_R0.01_le2_12x10_box 12 10 0.01 2e6" "problem3_R0.01_le2_12x20_box 12 20 0.01 2e6")
 # problem3_edit CELLS_X CELLS_Y RADIUS [E]: problem3.prm's substitutions
 problem3_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; ${4:+$(local_elastic "$4")}"; }
 # submit_full NAME PRM [sed expression]: the case at the paper's size (lsyf_4096) in
@@ -386,12 +390,14 @@ problem4_full() {
     submit_full "$name" "$here/problem4.prm" "$(problem4_edit "$x" "$y" "$radius" lsyf_4096); $(local_elastic "$modulus")"
   done
 }
-# problem3_run CASE...: band_case for each NAME CELLS_X CELLS_Y RADIUS [E]
+# problem3_run [--box] CASE...: band_case for each NAME CELLS_X CELLS_Y RADIUS [E]; with --box
+# the seed is the region of one 12x5 element (seed_box)
 problem3_run() {
-  local c name x y radius modulus
+  local c name x y radius modulus box=""
+  [[ $1 == --box ]] && { box="; $seed_box"; shift; }
   for c in "$@"; do
     read -r name x y radius modulus <<< "$c"
-    band_case "$name" "$here/problem3.prm" "$(problem3_edit "$x" "$y" "$radius" "$modulus")"
+    band_case "$name" "$here/problem3.prm" "$(problem3_edit "$x" "$y" "$radius" "$modulus")$box"
   done
 }
 problem3() {
@@ -403,7 +409,7 @@ problem3() {
       s#^  set Analysis = dynamic#  set Analysis = dynamic\n  set Time step = $dt#"
   done
   problem3_run "${problem3_band_cases[@]}" "${problem3_scaled_cases[@]}"
-  problem3_seed_box
+  problem3_run --box "${problem3_seed_box_cases[@]}" "${problem3_fixed_r_cases[@]}"
   problem3_table
 }
 problem3_table() {
@@ -461,7 +467,8 @@ case "$what" in
   modulus) modulus ;;
   problem3) if [[ -n $full ]]; then problem3_full; else problem3; fi ;;
   problem3_band) problem3_run "${problem3_band_cases[@]}"; problem3_table ;;
-  problem3_scaled) problem3_run "${problem3_scaled_cases[@]}"; problem3_seed_box; problem3_table ;;
+  problem3_scaled) problem3_run "${problem3_scaled_cases[@]}"; problem3_run --box "${problem3_seed_box_cases[@]}"; problem3_table ;;
+  problem3_fixed_r) problem3_run --box "${problem3_fixed_r_cases[@]}"; problem3_table ;;
   problem4) if [[ -n $full ]]; then problem4_full; else problem4; fi ;;
   problem4_rates) problem4_rates ;;
   macro_step) macro_step ;;

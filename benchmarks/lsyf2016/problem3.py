@@ -8,6 +8,9 @@ into RESULTS:
                        of shear at each IP (element centres), the weak IP marked
   problem3_rotation.png  the inner particles' mean rotation at the end at
                        each IP, for the runs that recorded it
+  problem3_profiles.png  the band's profile across it: the row means of the
+                       shear strain increment of the last 2 % against y, of
+                       the elements' F and of what the RVEs saw, for FIXED_R
   problem3.csv         per case and IP at the last row: position, band
                        membership, porosity, coordination, sliding fraction,
                        mean particle rotation
@@ -55,7 +58,9 @@ CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "p
          "R = 20 mm, local elastic 2 MPa": "problem3_R0.02_le2",
          "R = 6.75 mm, local elastic 2 MPa, 12x15": "problem3_R0.00675_le2_12x15",
          "R = 5 mm, local elastic 2 MPa, 12x20": "problem3_R0.005_le2_12x20",
-         "R = 15 mm, local elastic 2 MPa, 12x10, seed box": "problem3_R0.015_le2_12x10_box"}
+         "R = 15 mm, local elastic 2 MPa, 12x10, seed box": "problem3_R0.015_le2_12x10_box",
+         "R = 10 mm, local elastic 2 MPa, 12x10, seed box": "problem3_R0.01_le2_12x10_box",
+         "R = 10 mm, local elastic 2 MPa, 12x20, seed box": "problem3_R0.01_le2_12x20_box"}
 # the band width against R and the mesh: (R in mm, element height in mm, case)
 # The macro step is fe2dem's default (5 us on 12x5, 2 us on 12x10 and 12x15, 1 us on 12x20) but where the
 # case names it (run.sh problem3_step_cases, problem3_band_cases, problem3_scaled_cases; README,
@@ -67,7 +72,13 @@ RADII = [(0.0, 10.1, "local"), (15.0, 10.1, "R = 15 mm, local elastic 0.5 MPa"),
          (10.0, 5.06, "R = 10 mm, local elastic 2 MPa, 12x10"), (15.0, 5.06, "R = 15 mm, local elastic 2 MPa, 12x10"),
          (15.0, 10.1, "R = 15 mm, local elastic 2 MPa"), (20.0, 10.1, "R = 20 mm, local elastic 2 MPa"),
          (6.75, 3.37, "R = 6.75 mm, local elastic 2 MPa, 12x15"), (5.0, 2.53, "R = 5 mm, local elastic 2 MPa, 12x20"),
-         (15.0, 5.06, "R = 15 mm, local elastic 2 MPa, 12x10, seed box")]
+         (15.0, 5.06, "R = 15 mm, local elastic 2 MPa, 12x10, seed box"),
+         (10.0, 5.06, "R = 10 mm, local elastic 2 MPa, 12x10, seed box"),
+         (10.0, 2.53, "R = 10 mm, local elastic 2 MPa, 12x20, seed box")]
+# the band over meshes at a fixed R (run.sh problem3_fixed_r), beside the local band on two meshes:
+# the profiles across the band in problem3_profiles.png
+FIXED_R = ["local", "local, 12x10", "R = 10 mm, local elastic 2 MPa, 12x10, seed box",
+           "R = 10 mm, local elastic 2 MPa, 12x20, seed box"]
 # the band's directions in simple shear: along the shear, within 20 degrees of x (the local runs' band
 # is at 4 degrees); among all directions the finder can return a hot spot around the weak RVE
 ALONG_X = list(range(0, 21)) + list(range(160, 180))
@@ -174,6 +185,33 @@ def plot_rotation(cases, path):
     fig.savefig(path, dpi=110)
 
 
+def row_means(x, gamma):
+    """(y of each row of IPs, the mean of @p gamma over the row): a structured mesh's profile across
+    a band along x."""
+    y, row = np.unique(np.round(x[:, 1], 6), return_inverse=True)
+    return y, np.bincount(row, weights=gamma) / np.bincount(row)
+
+
+def plot_profiles(results, cases, path):
+    """Two panels, the elements' own F and the averaged F (what the RVEs saw): the row means of the
+    shear strain increment over the last BAND_ROWS rows against y, one line per case."""
+    if not cases:
+        return
+    fig, axes = plt.subplots(1, 2, figsize=(9, 3.6), sharey=True)
+    for ax, field, title in zip(axes, ("F", "F_nonlocal"), ("the elements' F", "the averaged F (what the RVEs saw)")):
+        for k in cases:
+            x, gamma, _, _, _ = inplane_band(os.path.join(results, CASES[k], "out", "history.h5"), BAND_ROWS,
+                                             ALONG_X, field)
+            y, g = row_means(x, gamma)
+            ax.plot(g, 1e3 * y, "o-", ms=3, label=k)
+        ax.set_title(f"{title}, last {BAND_ROWS // 2} % of shear", fontsize=8)
+        ax.set_xlabel("row mean of the shear strain increment")
+    axes[0].set_ylabel("y (mm)")
+    axes[0].legend(fontsize=6)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
 def print_softening(results, done):
     """The band's softening modulus in shear of the runs without C_e (band_tools.band_softening, tau
     = |sigma_12| of the mean stress) against C_e's shear modulus of the local elastic runs."""
@@ -245,6 +283,7 @@ def main():
     fig.savefig(os.path.join(results, "problem3_bands.png"), dpi=110)
     plot_rotation({k: d for k, d in done.items() if d["mean_rotation"] is not None},
                   os.path.join(results, "problem3_rotation.png"))
+    plot_profiles(results, [k for k in FIXED_R if k in done], os.path.join(results, "problem3_profiles.png"))
     with open(os.path.join(results, "problem3.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["case", "x", "y", "in_band", "porosity", "coordination", "sliding_fraction", "mean_rotation"])

@@ -23,7 +23,12 @@ it converged. Band width:
 benchmarks/lbs2018/band_width.py on the increment of F's in-plane block
 (x, y) over the last 4 and 16 rows (1 and 4 % of axial strain), at the
 IPs' reference positions, among the inclined directions (INCLINED) and,
-beside it, among all.
+beside it, among all; and the half-share width of the same increments
+(band_width.half_share_width, session 38, as benchmarks/lbs2018's since
+session 37): the smallest share of the IPs that holds half the increment,
+read as a uniform band crossing the specimen at the Coulomb angle of the
+run's peak ratio, 2 share H cos(angle), H = 80 mm. It needs no profile
+falling to half its peak inside the specimen, which the FWHM does.
 
 The band's softening modulus in shear, H_s = (tau_peak - tau_end) / gamma_band
 with tau = (sigma_a - p_c) / 2 and gamma_band the largest shear strain
@@ -46,7 +51,7 @@ import numpy as np  # noqa: E402
 import band_tools  # noqa: E402
 from band_tools import bw, inplane_band, plot_curves, print_ce_ratios, shear_modulus  # noqa: E402
 
-WIDTH, DEPTH, P_CONFINING = 0.04, 0.005, 4.16e5
+WIDTH, DEPTH, HEIGHT, P_CONFINING = 0.04, 0.005, 0.08, 4.16e5
 MESHES_R = ["6x12", "8x16", "10x20"]  # the meshes whose IPs R = 11.8 mm reaches
 # families: case-name pattern and meshes (le5, le1: the local elastic formulation, C_e of E = 5, 1 MPa)
 FAMILIES = {"local": ("problem4_local_{}", ["4x8"] + MESHES_R),
@@ -206,23 +211,30 @@ def print_load_parts(curves, done):
                   f"{s11 / 1e3:.0f} | {dJ:.4f} |")
 
 
-def print_bands(done, path):
-    """The band table (inclined directions over the last 1 and 4 %, and all over the last 1 %), the
-    band against R, and the PNG of the fields (a row per interval)."""
+def print_bands(done, curves, path):
+    """The band table (inclined directions over the last 1 and 4 %, and all over the last 1 %; the
+    half-share widths), the band against R, over the meshes and against C_e, and the PNG of the
+    fields (a row per interval)."""
     print("\n## band width (band_width.py; increment over the last 1 % and the last 4 % of axial strain)")
     print("| case | band width (mm), last 1 %, inclined | angle (deg from x) | last 4 %, inclined | angle | "
-          "last 1 %, among all directions | angle | gamma max, last 1 % |")
-    print("|---|---|---|---|---|---|---|---|")
+          "last 1 %, among all directions | angle | gamma max, last 1 % "
+          "| half-share width (mm), last 1 % (share) | last 4 % (share) | Coulomb angle (deg) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     fig, axes = plt.subplots(len(BAND_ROWS), len(done), figsize=(2.2 * len(done), 4.6 * len(BAND_ROWS)),
                              squeeze=False)
-    widths = {}
+    widths, half_widths = {}, {}
     for col, (k, d) in enumerate(done.items()):
         history = os.path.join(d, "out", "history.h5")
         bands = [inplane_band(history, rows, INCLINED) for rows in BAND_ROWS]
         _, _, width_all, angle_all, _ = inplane_band(history, BAND_ROWS[0])
         widths[k] = [b[2] for b in bands]
+        coulomb = bw.coulomb_angle(curves[k][2].max())
+        shares = [bw.half_share(b[1]) for b in bands]
+        half_widths[k] = [2 * share * HEIGHT * np.cos(np.radians(coulomb)) for share in shares]
         print(f"| {k} | {1e3 * bands[0][2]:.1f} | {bands[0][3]:.0f} | {1e3 * bands[1][2]:.1f} | {bands[1][3]:.0f} | "
-              f"{1e3 * width_all:.1f} | {angle_all:.0f} | {bands[0][1].max():.4f} |")
+              f"{1e3 * width_all:.1f} | {angle_all:.0f} | {bands[0][1].max():.4f} | "
+              + " | ".join(f"{1e3 * w:.1f} ({share:.3f})" for w, share in zip(half_widths[k], shares))
+              + f" | {coulomb:.0f} |")
         for ax, rows, (x, g, width, _, _) in zip(axes[:, col], BAND_ROWS, bands):
             sc = ax.scatter(1e3 * x[:, 0], 1e3 * x[:, 1], c=g, s=3000 / len(x), marker="s", cmap="viridis")
             ax.set_title(f"{k}\nlast {rows / 4:g} %: width {1e3 * width:.1f} mm", fontsize=7)
@@ -235,12 +247,14 @@ def print_bands(done, path):
                  "(x, y in mm)", fontsize=8)
     fig.tight_layout()
     fig.savefig(path, dpi=120)
-    print_width_series("band width against R (inclined)", "R (mm)",
-                       [(k, f"{r:g}", r) for r, k in RADII if k in widths], widths)
-    print_width_series("band width against C_e (inclined; R = 11.8 mm)",
-                       "C_e's shear modulus E / (2 (1 + nu)) (MPa)",
-                       [(k, f"{local_elastic_law(done[k])[1] / 1e6:.2f}", 11.8) for k in MODULI if k in widths],
-                       widths)
+    for title, measure in (("inclined", widths), ("half-share", half_widths)):
+        print_width_series(f"band width against R ({title})", "R (mm)",
+                           [(k, f"{r:g}", r) for r, k in RADII if k in measure], measure)
+        print_width_series(f"band width against C_e ({title}; R = 11.8 mm)",
+                           "C_e's shear modulus E / (2 (1 + nu)) (MPa)",
+                           [(k, f"{local_elastic_law(done[k])[1] / 1e6:.2f}", 11.8) for k in MODULI if k in measure],
+                           measure)
+    print_width_over_meshes(half_widths)
 
 
 def print_width_series(title, column, rows, widths):
@@ -253,6 +267,23 @@ def print_width_series(title, column, rows, widths):
     for k, value, r in rows:
         w1, w4 = (1e3 * w for w in widths[k])
         print(f"| {k} | {value} | {w1:.1f} | {w1 / r:.2f} | {w4:.1f} | {w4 / r:.2f} |")
+
+
+def print_width_over_meshes(widths):
+    """The half-share widths of each family over its meshes (last 1 % / last 4 %, mm), beside the
+    element height, and the change from the coarsest mesh to the finest."""
+    print("\n## half-share band width over the meshes (last 1 % / last 4 %, mm)")
+    meshes = FAMILIES["local"][1]
+    print("| family | " + " | ".join(f"{m} ({1e3 * HEIGHT / int(m.split('x')[1]):.3g} mm)" for m in meshes)
+          + " | coarsest -> finest, last 4 % |")
+    print("|---" * (len(meshes) + 2) + "|")
+    for fam, (_, fam_meshes) in FAMILIES.items():
+        have = [m for m in fam_meshes if f"{fam} {m}" in widths]
+        if len(have) < 2:
+            continue
+        cells = [" / ".join(f"{1e3 * w:.1f}" for w in widths[f"{fam} {m}"]) if m in have else "-" for m in meshes]
+        first, last = (widths[f"{fam} {m}"][1] for m in (have[0], have[-1]))
+        print(f"| {fam} | " + " | ".join(cells) + f" | {100 * (last / first - 1):+.0f} % ({have[0]} -> {have[-1]}) |")
 
 
 def print_cost(done):
@@ -290,7 +321,7 @@ def main():
     print_spreads(curves)
     print_softening(curves, done)
     print_load_parts(curves, done)
-    print_bands(done, os.path.join(results, "problem4_bands.png"))
+    print_bands(done, curves, os.path.join(results, "problem4_bands.png"))
     print_cost(done)
     plot_curves({k: (e, r) for k, (e, _, r) in curves.items()}, "axial strain (%)", "stress ratio (platens)",
                 os.path.join(results, "problem4_curves.png"), dashed=lambda k: not k.startswith("local"))

@@ -2,9 +2,10 @@
 """A deformation path as a 'Table file' for fe2dem-rve (Type = table): one
 row per step, the dim^2 components of F row by row.
 
-  history_to_table.py HISTORY_H5 IP OUT_TXT
+  history_to_table.py HISTORY_H5 IP OUT_TXT [DATASET]
       F of integration point IP in each step of an fe2dem history.h5 (the
-      macro F: with 'Initial pressure' it is relative to the prepared RVE).
+      macro F: with 'Initial pressure' it is relative to the prepared RVE);
+      DATASET F_nonlocal: the averaged F, what the IP's RVE saw.
   history_to_table.py RVE_CSV START_ROW OUT_TXT
       F of each rve.csv row after START_ROW, relative to that row's F:
       F_row = F_k F_start^-1 (e.g. START_ROW the last isotropic row).
@@ -20,9 +21,10 @@ import sys
 
 import numpy as np
 
-if len(sys.argv) != 4:
+if len(sys.argv) not in (4, 5) or (len(sys.argv) == 5 and sys.argv[4] not in ("F", "F_nonlocal")):
     sys.exit(__doc__)
 source, index, out = sys.argv[1], int(sys.argv[2]), sys.argv[3]
+dataset = sys.argv[4] if len(sys.argv) == 5 else "F"
 if source.endswith(".csv"):
     rows = list(csv.DictReader(open(source)))
     dim = 3 if "F33" in rows[0] else 2
@@ -37,11 +39,13 @@ else:
     import h5py
 
     with h5py.File(source, "r") as f:
-        F = f["F"][:, index, :]
+        if dataset not in f:
+            sys.exit(f"{source}: no dataset {dataset} (F_nonlocal needs a run with subsection Nonlocal)")
+        F = f[dataset][:, index, :]
     dim = int(round(F.shape[1] ** 0.5))
     what = f"IP {index} of {source}"
 with open(out, "w") as t:
-    t.write(f"# F of {what}: {len(F)} rows of {dim * dim} components (row by row)\n")
+    t.write(f"# {dataset if not source.endswith('.csv') else 'F'} of {what}: {len(F)} rows of {dim * dim} components (row by row)\n")
     for row in F:
         t.write(" ".join(f"{v:.17g}" for v in row) + "\n")
 print(f"{out}: {len(F)} rows")

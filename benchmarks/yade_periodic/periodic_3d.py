@@ -9,14 +9,15 @@ Usage (no GUI, one thread):
     yade -n -x -j1 periodic_3d.py PACKING.periodic.data OUT.csv PATH RATE_FACTOR [NAME=VALUE ...]
 
     PACKING      LIGGGHTS write_data file (atom_style sphere:
-                 id type diameter density x y z ix iy iz), periodic cubic box.
+                 id type diameter density x y z ix iy iz), periodic cubic box;
+                 or an RVE's NAME.rve.data (read_packing).
     OUT.csv      results: the packing as read, the end of the isotropic stage
                  and a row every REC_STEP (0.25 %) of strain (COLUMNS below).
                  A denser trace (every 0.05 %) goes to OUT_trace.csv.  While
                  the run is going, the rows so far are in OUT.csv.part (and
                  OUT_trace.csv.part); they are renamed at the end, so an
                  existing OUT.csv is always a finished run.
-    PATH         triaxial | shear
+    PATH         triaxial | shear | shear_cv
     RATE_FACTOR  multiplies BASE_RATE (1 = base rate 0.25 /s, 0.5 = half rate).
     NAME=VALUE   override of a numeric parameter below, for checks only.
 
@@ -49,6 +50,10 @@ acts on the fluctuation velocity only).
      gamma = H_xy / Ly_ic reaches EPS_END (H = Cell.hSize, whose column 2 is
      the y period vector; gamma = x offset of the y period over its height
      at ic, i.e. the (1,2) entry of F relative to the ic state).
+     shear_cv: velGrad_xy = +RATE and nothing else: constant-volume simple
+     shear (F = I + gamma e1 x e2 from ic), no servo (issue 37: what a
+     weakened packing does when its RVE is driven at nearly constant
+     volume).
      At every REC_STEP of strain a row is recorded; if the servo error then
      exceeds REC_TOL, the driving component is paused (set to 0) until the
      error is below REC_TOL/2 (column hold_steps).  This safety net never
@@ -91,6 +96,16 @@ Servo (PI on the diagonal of velGrad, updated every NCTL = 10 steps):
 N_RAMP = 100000 steps (0.08 s), ISO_TOL = 1e-3, ISO_UNB = 1e-3,
 ISO_HOLD = 5000 steps, REC_TOL = 5e-3 (the 0.5 % asked for: a pause at a
 record is a safety net only; see hold_steps).
+YOUNG > 0 (issue 37): Hertz-Mindlin contacts, Ip2_FrictMat_FrictMat_MindlinPhys
+    (E* = YOUNG / (2 (1 - POISSON^2)), normal and tangential restitution EN)
+    and Law2_ScGeom_MindlinPhys_Mindlin, as the RVE's 'hertz 1' (Debian's
+    LIGGGHTS hertz: F_n = 4/3 E* sqrt(R*) overlap^1.5, k_t = 8 G* sqrt(R*
+    overlap); YADE's tangential law is incremental where LIGGGHTS' stores
+    the total shift, benchmarks/hertz_mindlin); stage 0 then checks F_n
+    against that closed form.
+PACKING may be an RVE's NAME.rve.data (issue 37): the periodic packing it
+    stands for, in the cell of NAME.vars, each frame group's copies once; so
+    a weakened RVE (rve_templates/weaken_packing.py) is run as it is.
 """
 import math
 import os
@@ -131,6 +146,9 @@ SLIDE_TOL = 0.999    # a contact slides if |Fs| >= SLIDE_TOL * MU * Fn
 RELAX_EVERY = 0      # > 0: hold the cell fixed at every RELAX_EVERY-th record and relax (a probe, not the reference)
 RELAX_UNB = 1.0e-3   # unbalanced force that ends a hold
 RELAX_MAX = 1000000  # steps, longest hold
+YOUNG = 0.0          # Pa; > 0: Hertz-Mindlin contacts of grains of this Young's modulus instead of KN, KS
+POISSON = 0.15       # the grains' Poisson ratio (Hertz-Mindlin only)
+EN = 0.684           # normal and tangential restitution (Hertz-Mindlin only; the RVE's 'restitution')
 
 
 fail = yade_common.make_fail("periodic_3d")
@@ -139,8 +157,8 @@ fail = yade_common.make_fail("periodic_3d")
 if len(sys.argv) < 5:
     fail("usage: yade -n -x -j1 periodic_3d.py PACKING OUT.csv triaxial|shear RATE_FACTOR [NAME=VALUE ...]")
 PACKING, OUTCSV, PATH, RATE_FACTOR = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4])
-if PATH not in ("triaxial", "shear"):
-    fail("PATH must be triaxial or shear, not " + PATH)
+if PATH not in ("triaxial", "shear", "shear_cv"):
+    fail("PATH must be triaxial, shear or shear_cv, not " + PATH)
 OVERRIDES = yade_common.apply_overrides(sys.argv[5:], globals(), fail)
 RATE = BASE_RATE * RATE_FACTOR
 TRACECSV = os.path.splitext(OUTCSV)[0] + "_trace.csv"
@@ -148,7 +166,24 @@ TRACECSV = os.path.splitext(OUTCSV)[0] + "_trace.csv"
 
 # ------------------------------------------------------------------ read packing
 def read_packing(path):
-    return yade_common.read_lammps_data(path, fail, "xyz")
+    """(box, atoms) of a periodic data file; of an RVE's NAME.rve.data (build_frame_3d.py: the inner
+    spheres and the frame's periodic copies, the cell [0, L) from NAME.vars) the periodic packing it
+    stands for: positions wrapped into the cell, a frame group's copies (same radius, same wrapped
+    position to 1e-6 of the cell) kept once."""
+    box, atoms = yade_common.read_lammps_data(path, fail, "xyz")
+    if not path.endswith(".rve.data"):
+        return box, atoms
+    with open(path[:-len(".rve.data")] + ".vars") as f:
+        var = {t[1]: float(t[3]) for t in (l.split() for l in f) if t and t[0] == "variable"}
+    L = [var["rve_L" + c] for c in "xyz"]
+    seen, kept = set(), []
+    for (aid, r, rho, x, y, z) in atoms:
+        w = [v % l for v, l in zip((x, y, z), L)]
+        key = (round(r / L[0] * 1e9),) + tuple(round(v / l * 1e6) % 1000000 for v, l in zip(w, L))
+        if key not in seen:
+            seen.add(key)
+            kept.append((aid, r, rho, w[0], w[1], w[2]))
+    return {c: (0.0, l) for c, l in zip("xyz", L)}, kept
 
 
 box, atoms = read_packing(PACKING)
@@ -157,15 +192,17 @@ RHO = atoms[0][2]
 if any(abs(a[2] - RHO) > 1e-9 * RHO for a in atoms):
     fail("the packing has more than one density")
 N = len(atoms)
+PHI0 = sum(4.0 / 3.0 * math.pi * a[1] ** 3 for a in atoms) / (L0[0] * L0[1] * L0[2])
 D_MEAN = 2.0 * sum(a[1] for a in atoms) / N
 
 # ------------------------------------------------------------------ scene
 O.periodic = True
 O.cell.hSize = Matrix3(L0[0], 0, 0, 0, L0[1], 0, 0, 0, L0[2])
 O.cell.homoDeform = 2   # particles follow the mean field (positions and velocities)
-mat = O.materials.append(FrictMat(young=1e9, poisson=0.2, density=RHO,
+HERTZ = YOUNG > 0
+mat = O.materials.append(FrictMat(young=YOUNG if HERTZ else 1e9, poisson=POISSON if HERTZ else 0.2, density=RHO,
                                   frictionAngle=math.atan(MU), label="grain"))
-# young/poisson are not used: kn, ks come from the MatchMakers below.
+# linear: young/poisson are not used, kn and ks come from the MatchMakers below.
 # utils.sphere gives mass rho 4/3 pi r^3 and inertia 2/5 m r^2.
 for (aid, r, rho, x, y, z) in atoms:
     O.bodies.append(utils.sphere((x - box["x"][0], y - box["y"][0], z - box["z"][0]), r, material=mat))
@@ -175,9 +212,10 @@ O.engines = [
     InsertionSortCollider([Bo1_Sphere_Aabb()]),
     InteractionLoop(
         [Ig2_Sphere_Sphere_ScGeom()],
-        [Ip2_FrictMat_FrictMat_FrictPhys(kn=MatchMaker(algo="val", val=KN),
-                                         ks=MatchMaker(algo="val", val=KS))],
-        [Law2_ScGeom_FrictPhys_CundallStrack()],
+        [Ip2_FrictMat_FrictMat_MindlinPhys(en=MatchMaker(algo="val", val=EN), es=MatchMaker(algo="val", val=EN))
+         if HERTZ else Ip2_FrictMat_FrictMat_FrictPhys(kn=MatchMaker(algo="val", val=KN),
+                                                       ks=MatchMaker(algo="val", val=KS))],
+        [Law2_ScGeom_MindlinPhys_Mindlin() if HERTZ else Law2_ScGeom_FrictPhys_CundallStrack()],
     ),
     PyRunner(command="control()", iterPeriod=NCTL, label="ctl", dead=True),
     NewtonIntegrator(damping=DAMP, gravity=(0, 0, 0), label="newton"),
@@ -241,7 +279,10 @@ def strain():
 
 def servo_err(s):
     """relative error of the stress-controlled normal stresses in stage 2
-    (the one of larger magnitude, signed: > 0 = less compression than P)."""
+    (the one of larger magnitude, signed: > 0 = less compression than P);
+    0 for shear_cv, which controls none."""
+    if PATH == "shear_cv":
+        return 0.0
     if PATH == "triaxial":
         e = [(s[0, 0] + P) / P, (s[1, 1] + P) / P]
         return max(e, key=abs)
@@ -282,7 +323,10 @@ def row(stage, hold=0):
 def header_lines(final):
     h = ["YADE %s periodic 3D %s reference (benchmarks/yade_periodic/periodic_3d.py)" % (version, PATH),
          "packing %s N %d Lx0 %.10g Ly0 %.10g Lz0 %.10g rho %g d_mean %.6g" % (PACKING, N, L0[0], L0[1], L0[2], RHO, D_MEAN),
-         "path %s kn %g ks %g mu %g damping %g dt %g P %g rate %g factor %g" % (PATH, KN, KS, MU, DAMP, DT, P, RATE, RATE_FACTOR)]
+         "path %s kn %g ks %g mu %g damping %g dt %g P %g rate %g factor %g" % (PATH, KN, KS, MU, DAMP, DT, P, RATE, RATE_FACTOR),
+         ("contact hertz-mindlin young %g poisson %g restitution %g" % (YOUNG, POISSON, EN) if HERTZ
+          else "contact linear"),
+         "solid fraction as read %.6f" % PHI0]
     if st["H_ic"] is not None:
         h.append("Lx_ic %.10g Ly_ic %.10g Lz_ic %.10g iso_steps %d" % (
             st["H_ic"][0, 0], st["H_ic"][1, 1], st["H_ic"][2, 2], st["iso_steps"]))
@@ -384,9 +428,11 @@ def control():
     if PATH == "triaxial":
         d = servo(s, (0, 1))
         drive = lambda on: set_velgrad(d[0], d[1], -RATE if on else 0.0)
-    else:
+    elif PATH == "shear":
         d = servo(s, (1,))
         drive = lambda on: set_velgrad(0.0, d[1], 0.0, RATE if on else 0.0)
+    else:
+        drive = lambda on: set_velgrad(0.0, 0.0, 0.0, RATE if on else 0.0)
     eps = strain()
     err = abs(servo_err(s))
     if eps >= st["next_trace"] - 1e-12:
@@ -456,12 +502,24 @@ newton.dead = True
 O.step()
 newton.dead = False
 cs = contacts()
-dev = max(abs(i.phys.normalForce.norm() - KN * i.geom.penetrationDepth) for i in cs)
-devs = max(abs(i.phys.kn - KN) + abs(i.phys.ks - KS) for i in cs)
-log("stage 0: %d contacts; max |Fn - KN*overlap| = %.3e N (max Fn %.3e N); kn/ks deviation %.3e; tan(phi) %.4f"
+log("%d spheres, solid fraction %.6f" % (N, PHI0))
+
+
+def law_force(i):
+    """The normal force the law should give: KN overlap, or Hertz's 4/3 E* sqrt(R*) overlap^1.5."""
+    d = i.geom.penetrationDepth
+    if not HERTZ:
+        return KN * d
+    r1, r2 = O.bodies[i.id1].shape.radius, O.bodies[i.id2].shape.radius
+    return 4.0 / 3.0 * YOUNG / (2.0 * (1.0 - POISSON ** 2)) * math.sqrt(r1 * r2 / (r1 + r2)) * d ** 1.5
+
+
+dev = max(abs(i.phys.normalForce.norm() - law_force(i)) for i in cs)
+devs = 0.0 if HERTZ else max(abs(i.phys.kn - KN) + abs(i.phys.ks - KS) for i in cs)
+log("stage 0: %d contacts; max |Fn - law| = %.3e N (max Fn %.3e N); kn/ks deviation %.3e; tan(phi) %.4f"
     % (len(cs), dev, max(i.phys.normalForce.norm() for i in cs), devs, cs[0].phys.tangensOfFrictionAngle))
 if dev > 1e-9 * max(i.phys.normalForce.norm() for i in cs) or devs > 0:
-    fail("contact stiffness is not the constant KN, KS")
+    fail("contact forces are not the law's (KN, KS or Hertz of YOUNG, POISSON)")
 r0 = row("initial")
 st["rows"].append(r0)
 show(r0)

@@ -4,12 +4,13 @@
 #   benchmarks/yade_periodic/run_3d.sh [--force] [CASE ...]
 #
 # CASE = PACKING:PATH:RATE_FACTOR[:NAME=VALUE+NAME=VALUE...] (PATH
-# triaxial|shear, factor 1 = 0.25 /s, 0.5 = 0.125 /s; the optional fourth
+# triaxial|shear|shear_cv, factor 1 = 0.25 /s, 0.5 = 0.125 /s; the optional fourth
 # field overrides parameters of periodic_3d.py and names the CSV, e.g.
 # small_3d:triaxial:1:RELAX_EVERY=2+EPS_END=0.03 -> ..._rate1_RELAX_EVERY2_EPS_END0.03.csv,
 # the path held at rest every 0.5 %, issue 35); default: small_3d and
 # lsyf_1000, both paths, both rates.
-# Runs periodic_3d.py on rve_templates/packings/PACKING.periodic.data, one
+# Runs periodic_3d.py on rve_templates/packings/PACKING.periodic.data (or, if
+# there is none, PACKING.rve.data: a weakened RVE), one
 # YADE thread, one run after the other, into results_3d/PACKING_PATH_rateF.csv
 # (+ _trace.csv, .log).  A case whose CSV exists is skipped (a CSV is only
 # written by a finished run) unless --force.  Then compare_3d.py prints the
@@ -55,7 +56,9 @@ for c in "${CASES[@]}"; do
         tag="_$(echo "$extra" | tr -d '=' | tr '+' '_')"
     fi
     data="$PACK/$name.periodic.data"
-    [ -f "$data" ] || { echo "run_3d.sh: no packing $data" >&2; exit 1; }
+    # an RVE without a periodic file (a weakened one): its .rve.data, read as the periodic packing
+    [ -f "$data" ] || data="$PACK/$name.rve.data"
+    [ -f "$data" ] || { echo "run_3d.sh: no packing $PACK/$name.periodic.data or .rve.data" >&2; exit 1; }
     csv="$OUT/${name}_${path}_rate$f$tag.csv"
     log="$OUT/${name}_${path}_rate$f$tag.log"
     if [ -f "$csv" ] && [ $FORCE -eq 0 ]; then

@@ -4,7 +4,7 @@
 average loses its pressure (README, problem 3: "Why the weak element takes an increment its RVE
 does not see").
 
-  RVE   RESULTS/cv_shear_rve_PACKING/rve.csv: fe2dem-rve, the frame RVE of rve_setup_3d with the
+  RVE   RESULTS/RVE_RUNS[PACKING]/rve.csv: fe2dem-rve, the frame RVE of rve_setup_3d with the
         [LSYF] Hertz grains, prepared at 416 kPa, then F12 = gamma to 8 % at 4 /s with F11, F22,
         F33 held (Path 'simple shear')
   YADE  YADE_RESULTS/PACKING_shear_cv_rateF_*.csv: benchmarks/yade_periodic/periodic_3d.py on
@@ -37,6 +37,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from yade_common import read_yade_csv  # noqa: E402
 
 PACKINGS = ("lsyf_300", "lsyf_300_weak")
+RVE_RUNS = {"lsyf_300": "step_shear_rve", "lsyf_300_weak": "cv_shear_rve_lsyf_300_weak"}  # run.sh shear_rve
 REPLAYS = ("problem3_R0.015_le2_12x10", "problem3_R0_12x10")  # one-IP seed: R = 15 mm (E = 2 MPa), local
 EVERY = 0.01      # the table's rows
 
@@ -99,8 +100,8 @@ def main():
     if len(sys.argv) != 3:
         sys.exit(__doc__)
     results, yade_results = sys.argv[1], sys.argv[2]
-    rve = {k: rve_curve(os.path.join(results, f"cv_shear_rve_{k}", "rve.csv")) for k in PACKINGS
-           if os.path.exists(os.path.join(results, f"cv_shear_rve_{k}", "wall_s"))}
+    rve = {k: rve_curve(os.path.join(results, RVE_RUNS[k], "rve.csv")) for k in PACKINGS
+           if os.path.exists(os.path.join(results, RVE_RUNS[k], "wall_s"))}
     yade = {k: yade_curves(yade_results, k) for k in PACKINGS}
     columns = [(f"RVE {k}", rve[k]) for k in PACKINGS if k in rve]
     columns += [(f"YADE {k}, {rate:g} /s", c) for k in PACKINGS for rate, c in sorted(yade[k].items(), reverse=True)]

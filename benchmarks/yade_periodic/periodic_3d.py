@@ -6,7 +6,7 @@ of a fully periodic cell, loaded continuously at a constant strain rate.
 
 Usage (no GUI, one thread):
 
-    yade -n -x -j1 periodic_3d.py PACKING.periodic.data OUT.csv PATH RATE_FACTOR [NAME=VALUE ...]
+    yade -n -x -j1 periodic_3d.py PACKING.periodic.data|PACKING.rve.data OUT.csv PATH RATE_FACTOR [NAME=VALUE ...]
 
     PACKING      LIGGGHTS write_data file (atom_style sphere:
                  id type diameter density x y z ix iy iz), periodic cubic box;
@@ -155,7 +155,7 @@ fail = yade_common.make_fail("periodic_3d")
 
 # ------------------------------------------------------------------ arguments
 if len(sys.argv) < 5:
-    fail("usage: yade -n -x -j1 periodic_3d.py PACKING OUT.csv triaxial|shear RATE_FACTOR [NAME=VALUE ...]")
+    fail("usage: yade -n -x -j1 periodic_3d.py PACKING OUT.csv triaxial|shear|shear_cv RATE_FACTOR [NAME=VALUE ...]")
 PACKING, OUTCSV, PATH, RATE_FACTOR = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4])
 if PATH not in ("triaxial", "shear", "shear_cv"):
     fail("PATH must be triaxial, shear or shear_cv, not " + PATH)

@@ -4,9 +4,9 @@
 average loses its pressure (README, problem 3: "Why the weak element takes an increment its RVE
 does not see").
 
-  RVE   RESULTS/RVE_RUNS[PACKING]/rve.csv: fe2dem-rve, the frame RVE of rve_setup_3d with the
-        [LSYF] Hertz grains, prepared at 416 kPa, then F12 = gamma to 8 % at 4 /s with F11, F22,
-        F33 held (Path 'simple shear')
+  RVE   RESULTS/RVE_RUNS[(PACKING, RATE)]/rve.csv: fe2dem-rve, the frame RVE of rve_setup_3d with
+        the [LSYF] Hertz grains, prepared at 416 kPa, then F12 = gamma to 8 % at RATE (4 or 1 /s)
+        with F11, F22, F33 held (Path 'simple shear')
   YADE  YADE_RESULTS/PACKING_shear_cv_rateF_*.csv: benchmarks/yade_periodic/periodic_3d.py on
         PACKING.rve.data read as the periodic packing it stands for, Hertz-Mindlin contacts of the
         same grains, isotropic to 416 kPa, then velGrad_xy alone (constant volume) at F x 0.25 /s
@@ -37,7 +37,8 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from yade_common import read_yade_csv  # noqa: E402
 
 PACKINGS = ("lsyf_300", "lsyf_300_weak")
-RVE_RUNS = {"lsyf_300": "step_shear_rve", "lsyf_300_weak": "cv_shear_rve_lsyf_300_weak"}  # run.sh shear_rve
+RVE_RUNS = {("lsyf_300", 4): "step_shear_rve", ("lsyf_300_weak", 4): "cv_shear_rve_lsyf_300_weak",
+            ("lsyf_300_weak", 1): "cv_shear_rve_lsyf_300_weak_rate1"}  # run.sh shear_rve
 REPLAYS = ("problem3_R0.015_le2_12x10", "problem3_R0_12x10")  # one-IP seed: R = 15 mm (E = 2 MPa), local
 EVERY = 0.01      # the table's rows
 
@@ -100,10 +101,10 @@ def main():
     if len(sys.argv) != 3:
         sys.exit(__doc__)
     results, yade_results = sys.argv[1], sys.argv[2]
-    rve = {k: rve_curve(os.path.join(results, RVE_RUNS[k], "rve.csv")) for k in PACKINGS
-           if os.path.exists(os.path.join(results, RVE_RUNS[k], "wall_s"))}
+    rve = {k: rve_curve(os.path.join(results, c, "rve.csv")) for k, c in RVE_RUNS.items()
+           if os.path.exists(os.path.join(results, c, "wall_s"))}
     yade = {k: yade_curves(yade_results, k) for k in PACKINGS}
-    columns = [(f"RVE {k}", rve[k]) for k in PACKINGS if k in rve]
+    columns = [(f"RVE {k}, {rate:g} /s", rve[(k, rate)]) for k, rate in RVE_RUNS if (k, rate) in rve]
     columns += [(f"YADE {k}, {rate:g} /s", c) for k in PACKINGS for rate, c in sorted(yade[k].items(), reverse=True)]
     if not columns:
         sys.exit("cv_shear.py: no run in " + results + " or " + yade_results)

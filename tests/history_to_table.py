@@ -5,7 +5,8 @@ row per step, the dim^2 components of F row by row.
   history_to_table.py HISTORY_H5 IP OUT_TXT [DATASET]
       F of integration point IP in each step of an fe2dem history.h5 (the
       macro F: with 'Initial pressure' it is relative to the prepared RVE);
-      DATASET F_nonlocal: the averaged F, what the IP's RVE saw.
+      DATASET F_nonlocal: the averaged F, what the IP's RVE saw (F itself
+      in a local run, which stores no F_nonlocal).
   history_to_table.py RVE_CSV START_ROW OUT_TXT
       F of each rve.csv row after START_ROW, relative to that row's F:
       F_row = F_k F_start^-1 (e.g. START_ROW the last isotropic row).
@@ -39,8 +40,8 @@ else:
     import h5py
 
     with h5py.File(source, "r") as f:
-        if dataset not in f:
-            sys.exit(f"{source}: no dataset {dataset} (F_nonlocal needs a run with subsection Nonlocal)")
+        if dataset not in f:  # a local run: its RVEs saw F
+            dataset = "F"
         F = f[dataset][:, index, :]
     dim = int(round(F.shape[1] ** 0.5))
     what = f"IP {index} of {source}"

@@ -47,6 +47,9 @@
 #              a region of one 12x5 element: the band over meshes at a fixed R
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
+#   cv_shear   problem 3's packings (lsyf_300, lsyf_300_weak) sheared at constant volume, fe2dem-rve
+#              against YADE's periodic cell with the same Hertz grains (benchmarks/yade_periodic/
+#              run_3d.sh shear_cv), and the weak RVE replayed along its averaged F (cv_shear.py)
 #   macro_step one element at 4 /s with the macro step and the RVE's
 #              'Check interval' varied (problems 3 and 4's RVEs), and problem
 #              1's shear element with lsyf_300 at three macro steps against
@@ -61,7 +64,7 @@
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
 # result exists and whose parameter file is unchanged is not run again.
 #
-#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem3_fixed_r|problem4|problem4_rates|macro_step|tables|all [--full]
+#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem3_fixed_r|problem4|problem4_rates|macro_step|cv_shear|tables|all [--full]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -445,9 +448,7 @@ macro_step() {
   # element (every node prescribed: F12 = gamma, the other F fixed) with lsyf_300 to 8 % at 4 /s,
   # Check interval 10, at three macro steps
   local small="s#packings/lsyf_4096#packings/lsyf_300#"
-  run_rve step_shear_rve "$here/problem1_shear_rve.prm" "$small; s#Shear strain      = 0.02#Shear strain      = 0.08#
-    s#Strain rate       = 0.5#Strain rate       = 4#; s#Loading steps     = 8#Loading steps     = 16#
-    0,/^subsection RVE/s//subsection RVE\n  set Check interval        = 10/"
+  shear_rve step_shear_rve lsyf_300 4
   for dt in 1e-6 2e-6 5e-6; do
     run_macro "step_shear_${dt%e-6}us" "$here/problem1_shear_dynamic.prm" 1 "$small; s#End time   = 0.04#End time   = 0.02#
       s#Load steps = 8#Load steps = 16#; s#0.02 \* t / 0.04 \* y#0.08 * t / 0.02 * y#g
@@ -455,6 +456,34 @@ macro_step() {
       s#^  set Analysis     = dynamic#  set Analysis     = dynamic\n  set Time step    = $dt#"
   done
   $py "$here/macro_step.py" "$results" | tee "$results/macro_step.txt"
+}
+# shear_rve NAME PACKING RATE: problem 1's shear element's single RVE (fe2dem-rve, every F but F12
+# held: constant volume) of PACKING to 8 % at RATE (1/s), 'Check interval' 10 as the elements' RVEs
+shear_rve() {
+  run_rve "$1" "$here/problem1_shear_rve.prm" "s#packings/lsyf_4096#packings/$2#
+    s#Shear strain      = 0.02#Shear strain      = 0.08#; s#Strain rate       = 0.5#Strain rate       = $3#
+    s#Loading steps     = 8#Loading steps     = 16#; 0,/^subsection RVE/s//subsection RVE\n  set Check interval        = 10/"
+}
+# Constant-volume simple shear of problem 3's two packings, fe2dem-rve (lsyf_300 at 4 /s: macro_step's
+# step_shear_rve) against a periodic YADE cell with the same Hertz grains (session 38; README,
+# problem 3), to 8 % at 4 /s (YADE's factor 16 of 0.25 /s), the weak packing at 1 /s too; and the
+# weak RVE of two problem-3 runs replayed alone along the averaged F its IP saw (weak_replay.prm)
+yade_cv="YOUNG=6.67e10+DT=1e-7+P=4.16e5+EPS_END=0.08"
+cv_shear() {
+  shear_rve step_shear_rve lsyf_300 4
+  shear_rve cv_shear_rve_lsyf_300_weak lsyf_300_weak 4
+  shear_rve cv_shear_rve_lsyf_300_weak_rate1 lsyf_300_weak 1
+  bash "$root/benchmarks/yade_periodic/run_3d.sh" "lsyf_300:shear_cv:16:$yade_cv" "lsyf_300_weak:shear_cv:16:$yade_cv" \
+    "lsyf_300_weak:shear_cv:4:$yade_cv"
+  local c weak
+  mkdir -p "$results/weak_replay_tables"
+  for c in problem3_R0.015_le2_12x10 problem3_R0_12x10; do
+    weak=$($py -c "import sys; sys.path.insert(0, '$here'); import problem3; print(problem3.weak_ip(problem3.read('$results/$c')))")
+    $py "$root/tests/history_to_table.py" "$results/$c/out/history.h5" "$weak" "$results/weak_replay_tables/$c.txt" \
+      F_nonlocal > /dev/null
+    run_rve "weak_replay_$c" "$here/weak_replay.prm" "s#TABLE#$results/weak_replay_tables/$c.txt#"
+  done
+  $py "$here/cv_shear.py" "$results" "$root/benchmarks/yade_periodic/results_3d" | tee "$results/cv_shear.txt"
 }
 problem4_table() {
   $py "$here/problem4.py" "$results" | tee "$results/problem4.txt"
@@ -472,8 +501,9 @@ case "$what" in
   problem4) if [[ -n $full ]]; then problem4_full; else problem4; fi ;;
   problem4_rates) problem4_rates ;;
   macro_step) macro_step ;;
+  cv_shear) cv_shear ;;
   tables) wave_table; problem1_tables; problem1_ensemble_table; modulus_table; problem3_table; problem4_table
           $py "$here/macro_step.py" "$results" | tee "$results/macro_step.txt" ;;
-  all) if [[ -n $full ]]; then problem3_full; problem4_full; else wave; problem1; modulus; problem3; problem4; problem4_rates; macro_step; fi ;;
+  all) if [[ -n $full ]]; then problem3_full; problem4_full; else wave; problem1; modulus; problem3; problem4; problem4_rates; macro_step; cv_shear; fi ;;
   *) sed -n '2,/^#   run.sh BUILD/p' "$0"; exit 2 ;;
 esac

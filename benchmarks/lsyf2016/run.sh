@@ -357,8 +357,8 @@ problem3_scaled_cases=("problem3_R0.02_le2 12 5 0.02 2e6" "problem3_R0.00675_le2
 seed_box='s#^  set Point   = .*#&\n  set Size    = 0.0098, 0.0101, 0.0127#'
 problem3_seed_box_cases=("problem3_R0.015_le2_12x10_box 12 10 0.015 2e6")
 # ... and the band at a fixed R over meshes (session 38): R = 10 mm, E = 2 MPa, the seed box, on
-# 12x10 (R = 2 element heights, the seed two IPs) and 12x20 (4 heights, four IPs; the default step
-# is 1 us there: about 70 min here)
+# 12x10 (R = 2 element heights, the seed two IPs; 30 min here) and 12x20 (4 heights, four IPs; the
+# default step is 1 us there: 50 min here)
 problem3_fixed_r_cases=("problem3_R0.01_le2_12x10_box 12 10 0.01 2e6" "problem3_R0.01_le2_12x20_box 12 20 0.01 2e6")
 # problem3_edit CELLS_X CELLS_Y RADIUS [E]: problem3.prm's substitutions
 problem3_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; ${4:+$(local_elastic "$4")}"; }
@@ -397,7 +397,7 @@ problem4_full() {
 # the seed is the region of one 12x5 element (seed_box)
 problem3_run() {
   local c name x y radius modulus box=""
-  [[ $1 == --box ]] && { box="; $seed_box"; shift; }
+  [[ ${1:-} == --box ]] && { box="; $seed_box"; shift; }
   for c in "$@"; do
     read -r name x y radius modulus <<< "$c"
     band_case "$name" "$here/problem3.prm" "$(problem3_edit "$x" "$y" "$radius" "$modulus")$box"
@@ -503,7 +503,8 @@ case "$what" in
   macro_step) macro_step ;;
   cv_shear) cv_shear ;;
   tables) wave_table; problem1_tables; problem1_ensemble_table; modulus_table; problem3_table; problem4_table
-          $py "$here/macro_step.py" "$results" | tee "$results/macro_step.txt" ;;
+          $py "$here/macro_step.py" "$results" | tee "$results/macro_step.txt"
+          $py "$here/cv_shear.py" "$results" "$root/benchmarks/yade_periodic/results_3d" | tee "$results/cv_shear.txt" ;;
   all) if [[ -n $full ]]; then problem3_full; problem4_full; else wave; problem1; modulus; problem3; problem4; problem4_rates; macro_step; cv_shear; fi ;;
   *) sed -n '2,/^#   run.sh BUILD/p' "$0"; exit 2 ;;
 esac

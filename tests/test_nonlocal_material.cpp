@@ -14,7 +14,9 @@
 //   is (diag(D) W + C (I - W))^-1 s, the weak point below its local strain
 //   and every strain positive;
 // - a homogeneous F gives both formulations the material's own stress;
-// - the local elastic term is objective: F and Fbar rotated alike rotate it.
+// - the local elastic term is objective: F and Fbar rotated alike rotate it;
+// - 'Volume change' = own: the driven F has the point's det F and the
+//   averaged F's isochoric part, and a homogeneous F drives as itself.
 #include "check.h"
 #include "nonlocal/nonlocal_material.h"
 #include "nonlocal/nonlocal_operator.h"
@@ -89,6 +91,59 @@ std::vector<Tensor<2, dim>> stresses(double R, const std::vector<double>& scale,
   for (unsigned int i = 0; i < n; ++i)
     P[i] = points[i].P;
   return P;
+}
+
+/// The F each point's inner material is driven with (F_nonlocal_trial), R = 2.5, C_e = the material's.
+std::vector<Tensor<2, dim>> driven(fe2dem::macro::VolumeChange volume, const std::vector<Tensor<2, dim>>& F)
+{
+  std::vector<Point<dim>> positions(n);
+  for (unsigned int i = 0; i < n; ++i)
+    positions[i] = Point<dim>(double(i), 0.0);
+  NonlocalMaterial<dim> material(std::make_unique<LinearMaterial>(std::vector<double>(n, 1.0)),
+                                 NonlocalOperator<dim>(positions, 2.5, NonlocalOperator<dim>::Weight::wendland), 1.0,
+                                 {Lame, 0.5 * (M - Lame)}, volume);
+  std::vector<IpState<dim>> points(n);
+  for (unsigned int i = 0; i < n; ++i)
+    points[i].position = positions[i], points[i].F = F[i];
+  material.evaluate(points);
+  std::vector<Tensor<2, dim>> seen(n);
+  for (unsigned int i = 0; i < n; ++i)
+    seen[i] = points[i].F_nonlocal_trial;
+  return seen;
+}
+
+/// VolumeChange::own: the driven F has the point's own det F and the averaged F's isochoric part,
+/// and a homogeneous F is driven as itself.
+void check_own_volume(Checker& c)
+{
+  using fe2dem::macro::VolumeChange;
+  std::vector<Tensor<2, dim>> F(n, unit_symmetric_tensor<dim>());
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    F[i][0][0] += 0.02 * std::sin(0.9 * i);
+    F[i][1][1] -= 0.01 * std::cos(0.7 * i);
+    F[i][0][1] += 0.03 * i / double(n);
+  }
+  const auto averaged = driven(VolumeChange::averaged, F), own = driven(VolumeChange::own, F);
+  double worst_det = 0.0, worst_shape = 0.0, moved = 0.0;
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    const double J = determinant(F[i]), Jbar = determinant(averaged[i]);
+    worst_det = std::max(worst_det, std::abs(determinant(own[i]) / J - 1.0));
+    worst_shape = std::max(worst_shape, (own[i] / std::sqrt(determinant(own[i])) - averaged[i] / std::sqrt(Jbar)).norm());
+    moved = std::max(moved, std::abs(Jbar / J - 1.0));
+  }
+  c.truth("the averaged volume differs from the own one here", moved > 1e-3, std::to_string(moved));
+  c.less("own volume: the driven F has the point's det F", worst_det, 1e-14);
+  c.less("own volume: the driven F has the averaged F's isochoric part", worst_shape, 1e-14);
+  Tensor<2, dim> G;
+  G[0][0] = 1.03, G[0][1] = 0.2, G[1][0] = -0.05, G[1][1] = 0.96;
+  const std::vector<Tensor<2, dim>> Gs(n, G);
+  const auto homogeneous = driven(VolumeChange::own, Gs);
+  double worst = 0.0;
+  for (unsigned int i = 0; i < n; ++i)
+    worst = std::max(worst, (homogeneous[i] - G).norm());
+  c.less("own volume: a homogeneous F drives every point with itself", worst, 1e-14);
 }
 
 std::vector<Tensor<2, dim>> uniaxial(const Vector<double>& strain)
@@ -184,6 +239,7 @@ int main()
   check_weak_point(c, 1.5, 1.0, 1.1);
   check_weak_point(c, 2.5, 1.5, 1.7);
   check_weak_point(c, 4.0, 5.5, 6.5);
+  check_own_volume(c);
 
   // A homogeneous F: the average is the point's own F (to rounding), and the local elastic term vanishes.
   {

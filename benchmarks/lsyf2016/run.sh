@@ -45,6 +45,8 @@
 #              and R = 15 mm on 12x10 with the seed a region of one 12x5 element
 #   problem3_fixed_r  problem 3 at a fixed R = 10 mm (E = 2 MPa) on 12x10 and 12x20, the seed
 #              a region of one 12x5 element: the band over meshes at a fixed R
+#   problem3_own_volume  the two problem3_fixed_r cases with 'Volume change' = own (each RVE's
+#              volume its element's): about 80 min
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
 #   cv_shear   problem 3's packings (lsyf_300, lsyf_300_weak) sheared at constant volume, fe2dem-rve
@@ -64,7 +66,7 @@
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
 # result exists and whose parameter file is unchanged is not run again.
 #
-#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem3_fixed_r|problem4|problem4_rates|macro_step|cv_shear|tables|all [--full]
+#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem3_fixed_r|problem3_own_volume|problem4|problem4_rates|macro_step|cv_shear|tables|all [--full]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -360,6 +362,10 @@ problem3_seed_box_cases=("problem3_R0.015_le2_12x10_box 12 10 0.015 2e6")
 # 12x10 (R = 2 element heights, the seed two IPs; 30 min here) and 12x20 (4 heights, four IPs; the
 # default step is 1 us there: 50 min here)
 problem3_fixed_r_cases=("problem3_R0.01_le2_12x10_box 12 10 0.01 2e6" "problem3_R0.01_le2_12x20_box 12 20 0.01 2e6")
+# ... and the same two with each RVE's volume change its own element's ('Volume change' = own,
+# session 39): only the isochoric part of the motion averaged
+problem3_own_volume_cases=("problem3_R0.01_le2_12x20_box_own 12 20 0.01 2e6" "problem3_R0.01_le2_12x10_box_own 12 10 0.01 2e6")
+own_volume='s/^\(  set Interaction radius = .*\)$/\1\n  set Volume change = own/'
 # problem3_edit CELLS_X CELLS_Y RADIUS [E]: problem3.prm's substitutions
 problem3_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; ${4:+$(local_elastic "$4")}"; }
 # submit_full NAME PRM [sed expression]: the case at the paper's size (lsyf_4096) in
@@ -393,11 +399,12 @@ problem4_full() {
     submit_full "$name" "$here/problem4.prm" "$(problem4_edit "$x" "$y" "$radius" lsyf_4096); $(local_elastic "$modulus")"
   done
 }
-# problem3_run [--box] CASE...: band_case for each NAME CELLS_X CELLS_Y RADIUS [E]; with --box
-# the seed is the region of one 12x5 element (seed_box)
+# problem3_run [--box] [--own] CASE...: band_case for each NAME CELLS_X CELLS_Y RADIUS [E]; with
+# --box the seed is the region of one 12x5 element (seed_box), with --own 'Volume change' = own
 problem3_run() {
   local c name x y radius modulus box=""
   [[ ${1:-} == --box ]] && { box="; $seed_box"; shift; }
+  [[ ${1:-} == --own ]] && { box="$box; $own_volume"; shift; }
   for c in "$@"; do
     read -r name x y radius modulus <<< "$c"
     band_case "$name" "$here/problem3.prm" "$(problem3_edit "$x" "$y" "$radius" "$modulus")$box"
@@ -413,6 +420,7 @@ problem3() {
   done
   problem3_run "${problem3_band_cases[@]}" "${problem3_scaled_cases[@]}"
   problem3_run --box "${problem3_seed_box_cases[@]}" "${problem3_fixed_r_cases[@]}"
+  problem3_run --box --own "${problem3_own_volume_cases[@]}"
   problem3_table
 }
 problem3_table() {
@@ -498,6 +506,7 @@ case "$what" in
   problem3_band) problem3_run "${problem3_band_cases[@]}"; problem3_table ;;
   problem3_scaled) problem3_run "${problem3_scaled_cases[@]}"; problem3_run --box "${problem3_seed_box_cases[@]}"; problem3_table ;;
   problem3_fixed_r) problem3_run --box "${problem3_fixed_r_cases[@]}"; problem3_table ;;
+  problem3_own_volume) problem3_run --box --own "${problem3_own_volume_cases[@]}"; problem3_table ;;
   problem4) if [[ -n $full ]]; then problem4_full; else problem4; fi ;;
   problem4_rates) problem4_rates ;;
   macro_step) macro_step ;;

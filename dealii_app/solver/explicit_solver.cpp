@@ -171,7 +171,8 @@ void ExplicitSolver<dim>::make_material(const std::string& checkpoint)
   nonlocal_ = averaging != nullptr;
   if (averaging) // outside the corotational update: the increments are averaged, then rotated (physics.md 1.4)
     material_ = std::make_unique<NonlocalMaterial<dim>>(std::move(material_), std::move(*averaging),
-                                                        prm_.nonlocal.alpha, local_elasticity());
+                                                        prm_.nonlocal.alpha, local_elasticity(),
+                                                        volume_change());
 }
 
 // The neighbour sets of 'Interaction radius' over the IPs' reference
@@ -227,6 +228,16 @@ LocalElasticity ExplicitSolver<dim>::local_elasticity() const
   pcout_ << "nonlocal operator: local elastic formulation, C_e with E = " << n.elastic_modulus
          << ", nu = " << n.poisson_ratio << std::endl;
   return {n.elastic_lambda(), n.elastic_mu()};
+}
+
+// 'Volume change' of subsection Nonlocal, in the nonlocal layer's terms.
+template <int dim>
+VolumeChange ExplicitSolver<dim>::volume_change() const
+{
+  if (prm_.nonlocal.volume_change == Nonlocal::Volume::averaged)
+    return VolumeChange::averaged;
+  pcout_ << "nonlocal operator: each RVE's volume change is its own element's ('Volume change' = own)" << std::endl;
+  return VolumeChange::own;
 }
 
 template <int dim>

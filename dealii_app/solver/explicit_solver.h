@@ -49,6 +49,7 @@
 namespace fe2dem::macro
 {
 struct LocalElasticity;
+enum class VolumeChange;
 template <int dim>
 class ExplicitSolver : private MacroSystem<dim>
 {
@@ -93,6 +94,7 @@ private:
   /// (a warning if the radius reaches no other IP).
   std::unique_ptr<NonlocalOperator<dim>> make_nonlocal_operator() const;
   LocalElasticity local_elasticity() const;
+  VolumeChange volume_change() const;
   /// The neo-Hookean law or the RVEs, before the corotational and nonlocal wrappers.
   void make_constitutive_material(const std::string& checkpoint);
   void update_stresses();

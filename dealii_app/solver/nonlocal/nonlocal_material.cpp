@@ -2,6 +2,7 @@
 
 #include <deal.II/base/tensor.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -11,8 +12,10 @@ using namespace dealii;
 
 template <int dim>
 NonlocalMaterial<dim>::NonlocalMaterial(std::unique_ptr<Material<dim>> inner, NonlocalOperator<dim> averaging,
-                                        const double alpha, const LocalElasticity elastic)
-  : MaterialWrapper<dim>(std::move(inner)), averaging_(std::move(averaging)), alpha_(alpha), elastic_(elastic)
+                                        const double alpha, const LocalElasticity elastic,
+                                        const VolumeChange volume)
+  : MaterialWrapper<dim>(std::move(inner)), averaging_(std::move(averaging)), alpha_(alpha), elastic_(elastic),
+    volume_(volume)
 {
   if (!(alpha >= 0.0 && alpha <= 1.0))
     throw std::invalid_argument("NonlocalMaterial: alpha = " + std::to_string(alpha) + " is not in [0, 1]");
@@ -46,6 +49,15 @@ EvaluationCost NonlocalMaterial<dim>::evaluate(std::vector<IpState<dim>>& points
       throw std::runtime_error("the nonlocal (averaged) F of quadrature point " + std::to_string(k) +
                                " has det F <= 0: its neighbours within 'Interaction radius' (subsection "
                                "Nonlocal) moved too far in one step; use more load steps or a smaller radius");
+    if (volume_ == VolumeChange::own)
+    {
+      const double J = determinant(points[k].F);
+      if (!(J > 0.0))
+        throw std::runtime_error("quadrature point " + std::to_string(k) + " has det F = " + std::to_string(J) +
+                                 " <= 0: its element is inverted ('Volume change' = own scales the "
+                                 "averaged F to it); use more load steps");
+      seen_[k].F *= std::pow(J / determinant(seen_[k].F), 1.0 / dim);
+    }
   }
   const EvaluationCost cost = this->inner().evaluate(seen_);
   for (std::size_t k = 0; k < n; ++k)

@@ -32,6 +32,16 @@
  * The difference of Green-Lagrange strains is objective (a rotation applied
  * to F and Fbar alike leaves it unchanged).
  *
+ * With VolumeChange::own the averaged F is scaled to the point's own volume,
+ *   Fbar_I <- (det F_I / det Fbar_I)^(1/dim) Fbar_I,
+ * so only the isochoric part of the motion is averaged and each RVE's volume
+ * is its own element's. Why: a packing's pressure follows its volume to a
+ * fraction of a per cent (lsyf_300_weak: bulk stiffness about 235 MPa at
+ * 416 kPa), so a weak RVE driven by its neighbours' volume change is no
+ * longer held at the applied stress by equilibrium (benchmarks/lsyf2016
+ * README, problem 3); with its own volume it is. The scaled Fbar is what is
+ * stored and committed, so the next step averages increments from it.
+ *
  * Because the weights of a point sum to 1, a homogeneous deformation gives
  * every point its own F (to rounding): the patch test holds. Fbar_n and the
  * committed increments are IpState::F_nonlocal and F_increment_committed,
@@ -56,6 +66,13 @@ struct LocalElasticity
   bool active() const { return lambda != 0.0 || mu != 0.0; }
 };
 
+/// Whose volume change drives the inner material: the averaged one ([LSYF]) or the point's own.
+enum class VolumeChange
+{
+  averaged,
+  own
+};
+
 template <int dim>
 class NonlocalMaterial : public MaterialWrapper<dim>
 {
@@ -65,10 +82,11 @@ public:
    * @param averaging the operator on the IPs, in the order of the points evaluate() gets
    * @param alpha of the staggered rule, in [0, 1]
    * @param elastic C_e of the local elastic formulation; default: none ([LSYF]'s total strain)
+   * @param volume own: the averaged F scaled to the point's own det F (only the isochoric part averaged)
    * @pre elastic.lambda >= 0, elastic.mu >= 0 (else std::invalid_argument)
    */
   NonlocalMaterial(std::unique_ptr<Material<dim>> inner, NonlocalOperator<dim> averaging, double alpha,
-                   LocalElasticity elastic = {});
+                   LocalElasticity elastic = {}, VolumeChange volume = VolumeChange::averaged);
 
   /// Sets every point's P (and statistics), F_nonlocal_trial and F_corotational_trial.
   /// @throws std::runtime_error if an averaged F has det <= 0, naming the point.
@@ -78,6 +96,7 @@ private:
   NonlocalOperator<dim> averaging_;
   double alpha_;
   LocalElasticity elastic_;
+  VolumeChange volume_;
   std::vector<dealii::Tensor<2, dim>> current_, lagged_, averaged_; ///< dF, dF at n+alpha, their average
   std::vector<IpState<dim>> seen_; ///< the points as the inner material sees them
 };

@@ -109,6 +109,12 @@ struct Nonlocal
   } formulation;
   double elastic_modulus; ///< C_e's Young's modulus (Pa; 2D: N/m), local_elastic only
   double poisson_ratio;   ///< C_e's Poisson ratio (2D: plane strain), local_elastic only
+  /// Whose volume change drives the material: the averaged one ([LSYF]) or the point's own.
+  enum class Volume
+  {
+    averaged,
+    own
+  } volume_change;
   bool active() const { return radius > 0.0; }
   /// C_e's Lame constants from its E and nu (2D: plane strain); 0 for total_strain.
   double elastic_lambda() const;

@@ -60,6 +60,15 @@ void Nonlocal::declare_parameters(dealii::ParameterHandler& prm)
                     "times larger for grains: it forces a homogeneous deformation). Its P-wave "
                     "modulus lambda + 2 mu must not exceed the one the stable step is estimated "
                     "with (subsection Material).");
+  prm.declare_entry("Volume change", "averaged", Selection("averaged|own"),
+                    "Whose volume change drives each IP's material. averaged ([LSYF]): the whole "
+                    "increment is averaged. own: the averaged F is scaled to the IP's own det F, "
+                    "so only the isochoric (shape) part is averaged and each RVE's volume is its "
+                    "own element's. A packing's pressure follows its volume to a fraction of a "
+                    "per cent, so with 'averaged' a weak RVE among stiffer ones is driven off the "
+                    "applied stress by its neighbours' volume change (benchmarks/lsyf2016/README.md, "
+                    "problem 3); 'own' keeps it under equilibrium. A homogeneous deformation is "
+                    "the same with both.");
   prm.declare_entry("Local Poisson ratio", "0.2", Double(0.0, 0.4999),
                     "local elastic only: Poisson's ratio of C_e (2D: plane strain).");
   prm.leave_subsection();
@@ -86,6 +95,7 @@ void Nonlocal::parse_parameters(dealii::ParameterHandler& prm)
   formulation = prm.get("Formulation") == "local elastic" ? Formulation::local_elastic : Formulation::total_strain;
   elastic_modulus = prm.get_double("Local elastic modulus");
   poisson_ratio = prm.get_double("Local Poisson ratio");
+  volume_change = prm.get("Volume change") == "own" ? Volume::own : Volume::averaged;
   prm.leave_subsection();
   if (formulation == Formulation::local_elastic && !(elastic_modulus > 0.0 && std::isfinite(elastic_modulus)))
     throw std::runtime_error("subsection Nonlocal: 'Formulation' = local elastic needs 'Local elastic modulus' "

@@ -79,6 +79,9 @@ set(FE2DEM_LONG_RUNS
   # nonlocal RVEs in 3D explicit dynamics (the 2D quasi-static ones stay)
   macro_nonlocal_fine_patch_test_2d macro_nonlocal_dynamic_3d_np1 macro_nonlocal_dynamic_3d_np2
   restart_nonlocal_dynamic_3d_kill_np2_resume_np1
+  # 'Volume change' = own with RVEs in 2D (the unit test and the 3D patch test stay)
+  macro_nonlocal_own_volume_2d_np1 macro_nonlocal_own_volume_2d_np2
+  restart_nonlocal_own_volume_2d_kill_np2_resume_np1
   # restart variants of one guarantee (kill/resume, SIGTERM stay)
   shm_images_removed restart_dynamics_kill_np1_resume_np2
   restart_damaged_checkpoint_truncated restart_damaged_checkpoint_corrupted

@@ -60,7 +60,9 @@ CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "p
          "R = 5 mm, local elastic 2 MPa, 12x20": "problem3_R0.005_le2_12x20",
          "R = 15 mm, local elastic 2 MPa, 12x10, seed box": "problem3_R0.015_le2_12x10_box",
          "R = 10 mm, local elastic 2 MPa, 12x10, seed box": "problem3_R0.01_le2_12x10_box",
-         "R = 10 mm, local elastic 2 MPa, 12x20, seed box": "problem3_R0.01_le2_12x20_box"}
+         "R = 10 mm, local elastic 2 MPa, 12x20, seed box": "problem3_R0.01_le2_12x20_box",
+         "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume": "problem3_R0.01_le2_12x10_box_own",
+         "R = 10 mm, local elastic 2 MPa, 12x20, seed box, own volume": "problem3_R0.01_le2_12x20_box_own"}
 # the band width against R and the mesh: (R in mm, element height in mm, case)
 # The macro step is fe2dem's default (5 us on 12x5, 2 us on 12x10 and 12x15, 1 us on 12x20) but where the
 # case names it (run.sh problem3_step_cases, problem3_band_cases, problem3_scaled_cases; README,
@@ -74,11 +76,15 @@ RADII = [(0.0, 10.1, "local"), (15.0, 10.1, "R = 15 mm, local elastic 0.5 MPa"),
          (6.75, 3.37, "R = 6.75 mm, local elastic 2 MPa, 12x15"), (5.0, 2.53, "R = 5 mm, local elastic 2 MPa, 12x20"),
          (15.0, 5.06, "R = 15 mm, local elastic 2 MPa, 12x10, seed box"),
          (10.0, 5.06, "R = 10 mm, local elastic 2 MPa, 12x10, seed box"),
-         (10.0, 2.53, "R = 10 mm, local elastic 2 MPa, 12x20, seed box")]
+         (10.0, 2.53, "R = 10 mm, local elastic 2 MPa, 12x20, seed box"),
+         (10.0, 5.06, "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume"),
+         (10.0, 2.53, "R = 10 mm, local elastic 2 MPa, 12x20, seed box, own volume")]
 # the band over meshes at a fixed R (run.sh problem3_fixed_r), beside the local band on two meshes:
 # the profiles across the band in problem3_profiles.png
 FIXED_R = ["local", "local, 12x10", "R = 10 mm, local elastic 2 MPa, 12x10, seed box",
-           "R = 10 mm, local elastic 2 MPa, 12x20, seed box"]
+           "R = 10 mm, local elastic 2 MPa, 12x20, seed box",
+           "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume",
+           "R = 10 mm, local elastic 2 MPa, 12x20, seed box, own volume"]
 # the band's directions in simple shear: along the shear, within 20 degrees of x (the local runs' band
 # is at 4 degrees); among all directions the finder can return a hot spot around the weak RVE
 ALONG_X = list(range(0, 21)) + list(range(160, 180))
@@ -141,7 +147,8 @@ def print_seed(results, done):
     over those of all IPs, seen from the first weak one; 1 when local), the
     pressure and shear stress of their RVEs (Love-Weber) at the start and the end, and the volume
     change of the element (det F) against the one the RVE saw (det F_nonlocal)."""
-    print("\n## the weak RVE(s): their share of their own average, and what their RVE saw")
+    print("\n## the weak RVE(s), each (in the order of the IPs): their share of their own average, and what "
+          "their RVE saw")
     print("| case | weak IPs | share of the weak IPs in the average | RVE's p, first row -> end (kPa) "
           "| RVE's tau at the end (kPa) | element's det F | RVE's det F |")
     print("|---|---|---|---|---|---|---|")
@@ -150,11 +157,16 @@ def print_seed(results, done):
         x = d["ip_position"][:, :2]
         a = nonlocal_weights(os.path.join(results, CASES[k]), np.linalg.norm(x - x[weak[0]], axis=1))
         share = a[weak].sum() / a.sum()
-        s = d["sigma_lw"].reshape(len(d["step"]), -1, 3, 3)[:, weak[0]]
-        p = -np.trace(s, axis1=1, axis2=2) / 3
-        F, Fn = (d[f].reshape(len(d["step"]), -1, 3, 3)[-1, weak[0]] for f in ("F", "F_nonlocal"))
-        print(f"| {k} | {len(weak)} | {share:.2f} | {p[0] / 1e3:.0f} -> {p[-1] / 1e3:.0f} | {abs(s[-1, 0, 1]) / 1e3:.0f} "
-              f"| {np.linalg.det(F):.3f} | {np.linalg.det(Fn):.3f} |")
+        s = d["sigma_lw"].reshape(len(d["step"]), -1, 3, 3)[:, weak]
+        p = -np.trace(s, axis1=2, axis2=3) / 3
+        F, Fn = (d[f].reshape(len(d["step"]), -1, 3, 3)[-1, weak] for f in ("F", "F_nonlocal"))
+
+        def each(v, fmt):
+            return ", ".join(fmt.format(x) for x in v)
+
+        print(f"| {k} | {len(weak)} | {share:.2f} | {each(p[0] / 1e3, '{:.0f}')} -> {each(p[-1] / 1e3, '{:.0f}')} "
+              f"| {each(np.abs(s[-1, :, 0, 1]) / 1e3, '{:.0f}')} "
+              f"| {each(np.linalg.det(F), '{:.3f}')} | {each(np.linalg.det(Fn), '{:.3f}')} |")
 
 
 def weak_ip(d):

@@ -73,20 +73,28 @@ FullMatrix<double> weights(double R)
   return row_weights(x, R);
 }
 
-/// The wrapper's first Piola-Kirchhoff stress for the given F (F_committed = Fbar_n = I).
-std::vector<Tensor<2, dim>> stresses(double R, const std::vector<double>& scale, LocalElasticity elastic,
-                                     const std::vector<Tensor<2, dim>>& F)
+/// The points after the wrapper evaluated them at the given F (F_committed = Fbar_n = I), on the row.
+std::vector<IpState<dim>> evaluated(double R, const std::vector<double>& scale, LocalElasticity elastic,
+                                    fe2dem::macro::VolumeChange volume, const std::vector<Tensor<2, dim>>& F)
 {
   std::vector<Point<dim>> positions(n);
   for (unsigned int i = 0; i < n; ++i)
     positions[i] = Point<dim>(double(i), 0.0);
   NonlocalMaterial<dim> material(std::make_unique<LinearMaterial>(scale),
                                  NonlocalOperator<dim>(positions, R, NonlocalOperator<dim>::Weight::wendland), 1.0,
-                                 elastic);
+                                 elastic, volume);
   std::vector<IpState<dim>> points(n);
   for (unsigned int i = 0; i < n; ++i)
     points[i].position = positions[i], points[i].F = F[i];
   material.evaluate(points);
+  return points;
+}
+
+/// The wrapper's first Piola-Kirchhoff stress for the given F, the volume change averaged.
+std::vector<Tensor<2, dim>> stresses(double R, const std::vector<double>& scale, LocalElasticity elastic,
+                                     const std::vector<Tensor<2, dim>>& F)
+{
+  const auto points = evaluated(R, scale, elastic, fe2dem::macro::VolumeChange::averaged, F);
   std::vector<Tensor<2, dim>> P(n);
   for (unsigned int i = 0; i < n; ++i)
     P[i] = points[i].P;
@@ -96,16 +104,7 @@ std::vector<Tensor<2, dim>> stresses(double R, const std::vector<double>& scale,
 /// The F each point's inner material is driven with (F_nonlocal_trial), R = 2.5, C_e = the material's.
 std::vector<Tensor<2, dim>> driven(fe2dem::macro::VolumeChange volume, const std::vector<Tensor<2, dim>>& F)
 {
-  std::vector<Point<dim>> positions(n);
-  for (unsigned int i = 0; i < n; ++i)
-    positions[i] = Point<dim>(double(i), 0.0);
-  NonlocalMaterial<dim> material(std::make_unique<LinearMaterial>(std::vector<double>(n, 1.0)),
-                                 NonlocalOperator<dim>(positions, 2.5, NonlocalOperator<dim>::Weight::wendland), 1.0,
-                                 {Lame, 0.5 * (M - Lame)}, volume);
-  std::vector<IpState<dim>> points(n);
-  for (unsigned int i = 0; i < n; ++i)
-    points[i].position = positions[i], points[i].F = F[i];
-  material.evaluate(points);
+  const auto points = evaluated(2.5, std::vector<double>(n, 1.0), {Lame, 0.5 * (M - Lame)}, volume, F);
   std::vector<Tensor<2, dim>> seen(n);
   for (unsigned int i = 0; i < n; ++i)
     seen[i] = points[i].F_nonlocal_trial;

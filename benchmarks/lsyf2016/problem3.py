@@ -87,6 +87,9 @@ FIXED_R = ["local", "local, 12x10", "R = 10 mm, local elastic 2 MPa, 12x10, seed
            "R = 10 mm, local elastic 2 MPa, 12x20, seed box",
            "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume",
            "R = 10 mm, local elastic 2 MPa, 12x20, seed box, own volume"]
+# ... and their profiles' widths (print_profile_widths) with the one-IP seed at R = 15 mm on 12x10
+PROFILE_CASES = FIXED_R + ["R = 5 mm, local elastic 2 MPa, 12x20", "R = 15 mm, local elastic 2 MPa, 12x10",
+                           "R = 15 mm, local elastic 2 MPa, 12x10, own volume"]
 # the band's directions in simple shear: along the shear, within 20 degrees of x (the local runs' band
 # is at 4 degrees); among all directions the finder can return a hot spot around the weak RVE
 ALONG_X = list(range(0, 21)) + list(range(160, 180))
@@ -226,6 +229,41 @@ def plot_profiles(results, cases, path):
     fig.savefig(path, dpi=110)
 
 
+def half_peak_width(y, m):
+    """(width, y of the peak) of the profile @p m over @p y above half its peak, the crossings
+    interpolated linearly (a crossing beyond the first or last row: that row)."""
+    i = int(np.argmax(m))
+    half = 0.5 * m[i]
+    lo, hi = i, i
+    while lo > 0 and m[lo - 1] > half:
+        lo -= 1
+    while hi < len(m) - 1 and m[hi + 1] > half:
+        hi += 1
+    y_lo = y[lo] if lo == 0 else y[lo - 1] + (half - m[lo - 1]) / (m[lo] - m[lo - 1]) * (y[lo] - y[lo - 1])
+    y_hi = y[hi] if hi == len(m) - 1 else y[hi] + (m[hi] - half) / (m[hi] - m[hi + 1]) * (y[hi + 1] - y[hi])
+    return y_hi - y_lo, y[i]
+
+
+def print_profile_widths(results, cases):
+    """The band as its row means across y (the profiles of problem3_profiles.png): the width above half
+    the peak row mean, of the elements' F and of the averaged F. Chosen in session 39 after the
+    finder's half-largest rule, set off by the weak column's spike alone, read 2 mm on 12x20."""
+    if not cases:
+        return
+    print(f"\n## the band's profile across y (row means of the shear strain increment of the last "
+          f"{BAND_ROWS} rows): width above half its peak")
+    print("| case | elements' F: width (mm) | at y (mm) | averaged F: width (mm) | at y (mm) |")
+    print("|---|---|---|---|---|")
+    for k in cases:
+        cells = []
+        for field in ("F", "F_nonlocal"):
+            x, gamma, _, _, _ = inplane_band(os.path.join(results, CASES[k], "out", "history.h5"), BAND_ROWS,
+                                             ALONG_X, field)
+            width, y_peak = half_peak_width(*row_means(x, gamma))
+            cells += [f"{1e3 * width:.1f}", f"{1e3 * y_peak:.1f}"]
+        print(f"| {k} | " + " | ".join(cells) + " |")
+
+
 def print_softening(results, done):
     """The band's softening modulus in shear of the runs without C_e (band_tools.band_softening, tau
     = |sigma_12| of the mean stress) against C_e's shear modulus of the local elastic runs."""
@@ -298,6 +336,7 @@ def main():
     plot_rotation({k: d for k, d in done.items() if d["mean_rotation"] is not None},
                   os.path.join(results, "problem3_rotation.png"))
     plot_profiles(results, [k for k in FIXED_R if k in done], os.path.join(results, "problem3_profiles.png"))
+    print_profile_widths(results, [k for k in PROFILE_CASES if k in done])
     with open(os.path.join(results, "problem3.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["case", "x", "y", "in_band", "porosity", "coordination", "sliding_fraction", "mean_rotation"])

@@ -63,7 +63,8 @@ CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "p
          "R = 10 mm, local elastic 2 MPa, 12x20, seed box": "problem3_R0.01_le2_12x20_box",
          "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume": "problem3_R0.01_le2_12x10_box_own",
          "R = 10 mm, local elastic 2 MPa, 12x20, seed box, own volume": "problem3_R0.01_le2_12x20_box_own",
-         "R = 15 mm, local elastic 2 MPa, 12x10, own volume": "problem3_R0.015_le2_12x10_own"}
+         "R = 15 mm, local elastic 2 MPa, 12x10, own volume": "problem3_R0.015_le2_12x10_own",
+         "R = 15 mm, local elastic 2 MPa, 12x20, seed box, own volume": "problem3_R0.015_le2_12x20_box_own"}
 # the band width against R and the mesh: (R in mm, element height in mm, case)
 # The macro step is fe2dem's default (5 us on 12x5, 2 us on 12x10 and 12x15, 1 us on 12x20) but where the
 # case names it (run.sh problem3_step_cases, problem3_band_cases, problem3_scaled_cases; README,
@@ -80,7 +81,8 @@ RADII = [(0.0, 10.1, "local"), (15.0, 10.1, "R = 15 mm, local elastic 0.5 MPa"),
          (10.0, 2.53, "R = 10 mm, local elastic 2 MPa, 12x20, seed box"),
          (10.0, 5.06, "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume"),
          (10.0, 2.53, "R = 10 mm, local elastic 2 MPa, 12x20, seed box, own volume"),
-         (15.0, 5.06, "R = 15 mm, local elastic 2 MPa, 12x10, own volume")]
+         (15.0, 5.06, "R = 15 mm, local elastic 2 MPa, 12x10, own volume"),
+         (15.0, 2.53, "R = 15 mm, local elastic 2 MPa, 12x20, seed box, own volume")]
 # the band over meshes at a fixed R (run.sh problem3_fixed_r), beside the local band on two meshes:
 # the profiles across the band in problem3_profiles.png
 FIXED_R = ["local", "local, 12x10", "R = 10 mm, local elastic 2 MPa, 12x10, seed box",
@@ -89,7 +91,8 @@ FIXED_R = ["local", "local, 12x10", "R = 10 mm, local elastic 2 MPa, 12x10, seed
            "R = 10 mm, local elastic 2 MPa, 12x20, seed box, own volume"]
 # ... and their profiles' widths (print_profile_widths) with the one-IP seed at R = 15 mm on 12x10
 PROFILE_CASES = FIXED_R + ["R = 5 mm, local elastic 2 MPa, 12x20", "R = 15 mm, local elastic 2 MPa, 12x10",
-                           "R = 15 mm, local elastic 2 MPa, 12x10, own volume"]
+                           "R = 15 mm, local elastic 2 MPa, 12x10, own volume",
+                           "R = 15 mm, local elastic 2 MPa, 12x20, seed box, own volume"]
 # the band's directions in simple shear: along the shear, within 20 degrees of x (the local runs' band
 # is at 4 degrees); among all directions the finder can return a hot spot around the weak RVE
 ALONG_X = list(range(0, 21)) + list(range(160, 180))

@@ -46,8 +46,8 @@
 #   problem3_fixed_r  problem 3 at a fixed R = 10 mm (E = 2 MPa) on 12x10 and 12x20, the seed
 #              a region of one 12x5 element: the band over meshes at a fixed R
 #   problem3_own_volume  the two problem3_fixed_r cases with 'Volume change' = own (each RVE's
-#              volume its element's), and session 36's one-IP seed at R = 15 mm on 12x10 with it:
-#              about 130 min
+#              volume its element's), R = 15 mm on 12x20 with it, and session 36's one-IP seed at
+#              R = 15 mm on 12x10 with it: about 105 min alone
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
 #   cv_shear   problem 3's packings (lsyf_300, lsyf_300_weak) sheared at constant volume, fe2dem-rve
@@ -364,8 +364,10 @@ problem3_seed_box_cases=("problem3_R0.015_le2_12x10_box 12 10 0.015 2e6")
 # default step is 1 us there: 50 min here)
 problem3_fixed_r_cases=("problem3_R0.01_le2_12x10_box 12 10 0.01 2e6" "problem3_R0.01_le2_12x20_box 12 20 0.01 2e6")
 # ... and the same two with each RVE's volume change its own element's ('Volume change' = own,
-# session 39): only the isochoric part of the motion averaged
-problem3_own_volume_cases=("problem3_R0.01_le2_12x20_box_own 12 20 0.01 2e6" "problem3_R0.01_le2_12x10_box_own 12 10 0.01 2e6")
+# session 39): only the isochoric part of the motion averaged; and R = 15 mm on 12x20 (the band
+# against R on one mesh; R reaches the next column of IPs, 9.83 mm away, there)
+problem3_own_volume_cases=("problem3_R0.01_le2_12x20_box_own 12 20 0.01 2e6" "problem3_R0.01_le2_12x10_box_own 12 10 0.01 2e6"
+                           "problem3_R0.015_le2_12x20_box_own 12 20 0.015 2e6")
 # ... and session 36's one-IP seed at R = 15 mm on 12x10 (its weak RVE lost its pressure, 330 -> 47 kPa)
 # with it: no seed box
 problem3_own_volume_one_ip_cases=("problem3_R0.015_le2_12x10_own 12 10 0.015 2e6")

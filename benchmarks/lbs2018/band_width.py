@@ -116,6 +116,13 @@ def band_width(points, gamma, bin=None, band_angles=range(180)):
         if best is None or explained > best[0]:
             best = (explained, deg, centres, means)
     _, deg, centres, means = best
+    return half_maximum_width(centres, means), (deg + 90) % 180, (centres, means)
+
+
+def half_maximum_width(centres, means):
+    """The full width at half maximum of the profile `means` over `centres`: the distance between
+    the first crossings of half its peak on either side of the peak, interpolated linearly (NaN
+    without two crossings)."""
     k = int(np.argmax(means))
     half = 0.5 * means[k]
 
@@ -128,8 +135,7 @@ def band_width(points, gamma, bin=None, band_angles=range(180)):
             j += step
         return np.nan
 
-    width = crossing(+1) - crossing(-1)
-    return width, (deg + 90) % 180, (centres, means)
+    return crossing(+1) - crossing(-1)
 
 
 def half_share(gamma):

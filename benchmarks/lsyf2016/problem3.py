@@ -40,7 +40,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from band_tools import band_softening, inplane_band, plot_curves, print_ce_ratios  # noqa: E402
+from band_tools import band_softening, bw, inplane_band, plot_curves, print_ce_ratios  # noqa: E402
 
 CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "problem3_R0.025",
          "R = 25 mm, local elastic 584 MPa": "problem3_R0.025_le584",
@@ -232,25 +232,11 @@ def plot_profiles(results, cases, path):
     fig.savefig(path, dpi=110)
 
 
-def half_peak_width(y, m):
-    """(width, y of the peak) of the profile @p m over @p y above half its peak, the crossings
-    interpolated linearly (a crossing beyond the first or last row: that row)."""
-    i = int(np.argmax(m))
-    half = 0.5 * m[i]
-    lo, hi = i, i
-    while lo > 0 and m[lo - 1] > half:
-        lo -= 1
-    while hi < len(m) - 1 and m[hi + 1] > half:
-        hi += 1
-    y_lo = y[lo] if lo == 0 else y[lo - 1] + (half - m[lo - 1]) / (m[lo] - m[lo - 1]) * (y[lo] - y[lo - 1])
-    y_hi = y[hi] if hi == len(m) - 1 else y[hi] + (m[hi] - half) / (m[hi] - m[hi + 1]) * (y[hi + 1] - y[hi])
-    return y_hi - y_lo, y[i]
-
-
 def print_profile_widths(results, cases):
     """The band as its row means across y (the profiles of problem3_profiles.png): the width above half
     the peak row mean, of the elements' F and of the averaged F. Chosen in session 39 after the
-    finder's half-largest rule, set off by the weak column's spike alone, read 2 mm on 12x20."""
+    finder (band_width.py) read 2 mm on 12x20: its bins, 1 degree off x and half a row high, held
+    alternately more and fewer band IPs, so its half maximum was crossed one bin from the peak."""
     if not cases:
         return
     print(f"\n## the band's profile across y (row means of the shear strain increment of the last "
@@ -262,8 +248,8 @@ def print_profile_widths(results, cases):
         for field in ("F", "F_nonlocal"):
             x, gamma, _, _, _ = inplane_band(os.path.join(results, CASES[k], "out", "history.h5"), BAND_ROWS,
                                              ALONG_X, field)
-            width, y_peak = half_peak_width(*row_means(x, gamma))
-            cells += [f"{1e3 * width:.1f}", f"{1e3 * y_peak:.1f}"]
+            y, means = row_means(x, gamma)
+            cells += [f"{1e3 * bw.half_maximum_width(y, means):.1f}", f"{1e3 * y[int(np.argmax(means))]:.1f}"]
         print(f"| {k} | " + " | ".join(cells) + " |")
 
 

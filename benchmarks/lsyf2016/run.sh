@@ -47,7 +47,7 @@
 #              a region of one 12x5 element: the band over meshes at a fixed R
 #   problem3_own_volume  the two problem3_fixed_r cases with 'Volume change' = own (each RVE's
 #              volume its element's), R = 15 mm on 12x20 with it, and session 36's one-IP seed at
-#              R = 15 mm on 12x10 with it: about 105 min alone
+#              R = 15 mm on 12x10 with it: about 100 min alone
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
 #   cv_shear   problem 3's packings (lsyf_300, lsyf_300_weak) sheared at constant volume, fe2dem-rve

@@ -48,6 +48,8 @@
 #   problem3_own_volume  the two problem3_fixed_r cases with 'Volume change' = own (each RVE's
 #              volume its element's), R = 15 mm on 12x20 with it, and session 36's one-IP seed at
 #              R = 15 mm on 12x10 with it: about 100 min alone
+#   problem3_converged  the 12x10 own-volume case at half the macro step (1 us) and at half the
+#              rate (2 /s): is the banded answer converged in both? About 65 min alone
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
 #   cv_shear   problem 3's packings (lsyf_300, lsyf_300_weak) sheared at constant volume, fe2dem-rve
@@ -67,7 +69,7 @@
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
 # result exists and whose parameter file is unchanged is not run again.
 #
-#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem3_fixed_r|problem3_own_volume|problem4|problem4_rates|macro_step|cv_shear|tables|all [--full]
+#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem3_fixed_r|problem3_own_volume|problem3_converged|problem4|problem4_rates|macro_step|cv_shear|tables|all [--full]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -372,6 +374,16 @@ problem3_own_volume_cases=("problem3_R0.01_le2_12x20_box_own 12 20 0.01 2e6" "pr
 # with it: no seed box
 problem3_own_volume_one_ip_cases=("problem3_R0.015_le2_12x10_own 12 10 0.015 2e6")
 own_volume='s/^\(  set Interaction radius = .*\)$/\1\n  set Volume change = own/'
+# ... and problem3_own_volume's 12x10 case (R = 10 mm, the seed box) at half its macro step (1 us =
+# 10 DEM steps; the default picks 2 us) and at half the rate (2 /s, to 8 % in 40 ms, the default
+# step): the banded answer's convergence in the two numerical parameters (session 41)
+half_step='s#^  set Analysis = dynamic#  set Analysis = dynamic\n  set Time step = 1e-6#'
+half_rate='s#set End time   = 0.02#set End time   = 0.04#; s#t / 0.02#t / 0.04#g'
+problem3_converged() {
+  local own="$(problem3_edit 12 10 0.01 2e6); $seed_box; $own_volume"
+  band_case problem3_R0.01_le2_12x10_box_own_dt1us "$here/problem3.prm" "$own; $half_step"
+  band_case problem3_R0.01_le2_12x10_box_own_rate2 "$here/problem3.prm" "$own; $half_rate"
+}
 # problem3_edit CELLS_X CELLS_Y RADIUS [E]: problem3.prm's substitutions
 problem3_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; ${4:+$(local_elastic "$4")}"; }
 # submit_full NAME PRM [sed expression]: the case at the paper's size (lsyf_4096) in
@@ -428,6 +440,7 @@ problem3() {
   problem3_run --box "${problem3_seed_box_cases[@]}" "${problem3_fixed_r_cases[@]}"
   problem3_run --box --own "${problem3_own_volume_cases[@]}"
   problem3_run --own "${problem3_own_volume_one_ip_cases[@]}"
+  problem3_converged
   problem3_table
 }
 problem3_table() {
@@ -515,6 +528,7 @@ case "$what" in
   problem3_fixed_r) problem3_run --box "${problem3_fixed_r_cases[@]}"; problem3_table ;;
   problem3_own_volume) problem3_run --box --own "${problem3_own_volume_cases[@]}"
                        problem3_run --own "${problem3_own_volume_one_ip_cases[@]}"; problem3_table ;;
+  problem3_converged) problem3_converged; problem3_table ;;
   problem4) if [[ -n $full ]]; then problem4_full; else problem4; fi ;;
   problem4_rates) problem4_rates ;;
   macro_step) macro_step ;;

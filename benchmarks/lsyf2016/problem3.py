@@ -64,7 +64,10 @@ CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "p
          "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume": "problem3_R0.01_le2_12x10_box_own",
          "R = 10 mm, local elastic 2 MPa, 12x20, seed box, own volume": "problem3_R0.01_le2_12x20_box_own",
          "R = 15 mm, local elastic 2 MPa, 12x10, own volume": "problem3_R0.015_le2_12x10_own",
-         "R = 15 mm, local elastic 2 MPa, 12x20, seed box, own volume": "problem3_R0.015_le2_12x20_box_own"}
+         "R = 15 mm, local elastic 2 MPa, 12x20, seed box, own volume": "problem3_R0.015_le2_12x20_box_own",
+         "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 1 us step":
+             "problem3_R0.01_le2_12x10_box_own_dt1us",
+         "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 2 /s": "problem3_R0.01_le2_12x10_box_own_rate2"}
 # the band width against R and the mesh: (R in mm, element height in mm, case)
 # The macro step is fe2dem's default (5 us on 12x5, 2 us on 12x10 and 12x15, 1 us on 12x20) but where the
 # case names it (run.sh problem3_step_cases, problem3_band_cases, problem3_scaled_cases; README,
@@ -93,6 +96,12 @@ FIXED_R = ["local", "local, 12x10", "R = 10 mm, local elastic 2 MPa, 12x10, seed
 PROFILE_CASES = FIXED_R + ["R = 5 mm, local elastic 2 MPa, 12x20", "R = 15 mm, local elastic 2 MPa, 12x10",
                            "R = 15 mm, local elastic 2 MPa, 12x10, own volume",
                            "R = 15 mm, local elastic 2 MPa, 12x20, seed box, own volume"]
+# the banded answer's convergence (run.sh problem3_converged): the reference (default macro step 2 us,
+# 4 /s) and the same case at half the macro step and at half the rate
+CONVERGED = ("R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume",
+             "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 1 us step",
+             "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 2 /s")
+BACKWARDS = -0.01  # a shear increment below this over the last BAND_ROWS rows: an IP shearing backwards
 # the band's directions in simple shear: along the shear, within 20 degrees of x (the local runs' band
 # is at 4 degrees); among all directions the finder can return a hot spot around the weak RVE
 ALONG_X = list(range(0, 21)) + list(range(160, 180))
@@ -232,6 +241,16 @@ def plot_profiles(results, cases, path):
     fig.savefig(path, dpi=110)
 
 
+def profile(results, k, field):
+    """(width above half its peak, y of the peak) in m of case @p k's row-mean profile of the shear
+    strain increment over the last BAND_ROWS rows, of @p field (F: the elements', F_nonlocal: the
+    averaged F)."""
+    x, gamma, _, _, _ = inplane_band(os.path.join(results, CASES[k], "out", "history.h5"), BAND_ROWS,
+                                     ALONG_X, field)
+    y, means = row_means(x, gamma)
+    return bw.half_maximum_width(y, means), y[int(np.argmax(means))]
+
+
 def print_profile_widths(results, cases):
     """The band as its row means across y (the profiles of problem3_profiles.png): the width above half
     the peak row mean, of the elements' F and of the averaged F. Chosen in session 39 after the
@@ -244,13 +263,44 @@ def print_profile_widths(results, cases):
     print("| case | elements' F: width (mm) | at y (mm) | averaged F: width (mm) | at y (mm) |")
     print("|---|---|---|---|---|")
     for k in cases:
-        cells = []
-        for field in ("F", "F_nonlocal"):
-            x, gamma, _, _, _ = inplane_band(os.path.join(results, CASES[k], "out", "history.h5"), BAND_ROWS,
-                                             ALONG_X, field)
-            y, means = row_means(x, gamma)
-            cells += [f"{1e3 * bw.half_maximum_width(y, means):.1f}", f"{1e3 * y[int(np.argmax(means))]:.1f}"]
+        cells = [f"{1e3 * v:.1f}" for field in ("F", "F_nonlocal") for v in profile(results, k, field)]
         print(f"| {k} | " + " | ".join(cells) + " |")
+
+
+def print_convergence(results, done):
+    """The banded answer at half the macro step and at half the rate against the reference
+    (CONVERGED[0]): tau/p of the mean stress at every row, the weak RVEs' pressure at the end, the
+    row-mean profile and the IPs shearing backwards. Rows are equal fractions of the shear, so the
+    half-rate run's rows are at the reference's strains."""
+    ref, *variants = CONVERGED
+
+    def at(tp, row):
+        return f"{tp[row]:.3f}" if row < len(tp) else "-"
+    if ref not in done or not any(k in done for k in variants):
+        return
+    print("\n## converged? the reference (default macro step, 4 /s) at half the macro step and at half the rate")
+    print("| case | largest difference of tau/p from the reference over the rows (at shear) | tau/p at 4 / 8 % "
+          "| weak RVEs' p at the end (kPa) | profile width (mm): elements' / averaged F | its peak at y (mm) "
+          f"| IPs below {BACKWARDS} | wall (s) |")
+    print("|---|---|---|---|---|---|---|---|")
+    _, tp_ref = curve(done[ref])
+    for k in (ref, *variants):
+        if k not in done:
+            continue
+        d = done[k]
+        g, tp = curve(d)
+        n = min(len(tp), len(tp_ref))
+        diff = tp[:n] - tp_ref[:n]
+        worst = int(np.argmax(np.abs(diff)))
+        weak = weak_ips(d)
+        s = d["sigma_lw"].reshape(len(d["step"]), -1, 3, 3)[-1, weak]
+        p = -np.trace(s, axis1=1, axis2=2) / 3
+        (w, y), (w_seen, y_seen) = (profile(results, k, f) for f in ("F", "F_nonlocal"))
+        gamma = shear_increment(d["F"], len(d["step"]))
+        wall = float(open(os.path.join(results, CASES[k], "wall_s")).read())
+        print(f"| {k} | {diff[worst]:+.4f} ({100 * g[worst]:.1f} %) | {at(tp, 8)} / {at(tp, 16)} "
+              f"| {', '.join(f'{v / 1e3:.0f}' for v in p)} | {1e3 * w:.1f} / {1e3 * w_seen:.1f} "
+              f"| {1e3 * y:.1f} / {1e3 * y_seen:.1f} | {int((gamma < BACKWARDS).sum())} of {len(gamma)} | {wall:.0f} |")
 
 
 def print_softening(results, done):
@@ -326,6 +376,7 @@ def main():
                   os.path.join(results, "problem3_rotation.png"))
     plot_profiles(results, [k for k in FIXED_R if k in done], os.path.join(results, "problem3_profiles.png"))
     print_profile_widths(results, [k for k in PROFILE_CASES if k in done])
+    print_convergence(results, done)
     with open(os.path.join(results, "problem3.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["case", "x", "y", "in_band", "porosity", "coordination", "sliding_fraction", "mean_rotation"])

@@ -65,6 +65,7 @@ CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "p
          "R = 10 mm, local elastic 2 MPa, 12x20, seed box, own volume": "problem3_R0.01_le2_12x20_box_own",
          "R = 15 mm, local elastic 2 MPa, 12x10, own volume": "problem3_R0.015_le2_12x10_own",
          "R = 15 mm, local elastic 2 MPa, 12x20, seed box, own volume": "problem3_R0.015_le2_12x20_box_own",
+         "R = 5 mm, local elastic 2 MPa, 12x20, seed box, own volume": "problem3_R0.005_le2_12x20_box_own",
          "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 1 us step":
              "problem3_R0.01_le2_12x10_box_own_dt1us",
          "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 2 /s": "problem3_R0.01_le2_12x10_box_own_rate2"}
@@ -85,7 +86,8 @@ RADII = [(0.0, 10.1, "local"), (15.0, 10.1, "R = 15 mm, local elastic 0.5 MPa"),
          (10.0, 5.06, "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume"),
          (10.0, 2.53, "R = 10 mm, local elastic 2 MPa, 12x20, seed box, own volume"),
          (15.0, 5.06, "R = 15 mm, local elastic 2 MPa, 12x10, own volume"),
-         (15.0, 2.53, "R = 15 mm, local elastic 2 MPa, 12x20, seed box, own volume")]
+         (15.0, 2.53, "R = 15 mm, local elastic 2 MPa, 12x20, seed box, own volume"),
+         (5.0, 2.53, "R = 5 mm, local elastic 2 MPa, 12x20, seed box, own volume")]
 # the band over meshes at a fixed R (run.sh problem3_fixed_r), beside the local band on two meshes:
 # the profiles across the band in problem3_profiles.png
 FIXED_R = ["local", "local, 12x10", "R = 10 mm, local elastic 2 MPa, 12x10, seed box",
@@ -95,7 +97,8 @@ FIXED_R = ["local", "local, 12x10", "R = 10 mm, local elastic 2 MPa, 12x10, seed
 # ... and their profiles' widths (print_profile_widths) with the one-IP seed at R = 15 mm on 12x10
 PROFILE_CASES = FIXED_R + ["R = 5 mm, local elastic 2 MPa, 12x20", "R = 15 mm, local elastic 2 MPa, 12x10",
                            "R = 15 mm, local elastic 2 MPa, 12x10, own volume",
-                           "R = 15 mm, local elastic 2 MPa, 12x20, seed box, own volume"]
+                           "R = 15 mm, local elastic 2 MPa, 12x20, seed box, own volume",
+                           "R = 5 mm, local elastic 2 MPa, 12x20, seed box, own volume"]
 # the banded answer's convergence (run.sh problem3_converged): the reference (default macro step 2 us,
 # 4 /s) and the same case at half the macro step and at half the rate
 CONVERGED = ("R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume",

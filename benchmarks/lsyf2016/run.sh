@@ -47,7 +47,7 @@
 #              a region of one 12x5 element: the band over meshes at a fixed R
 #   problem3_own_volume  the two problem3_fixed_r cases with 'Volume change' = own (each RVE's
 #              volume its element's), R = 15 mm on 12x20 with it, and session 36's one-IP seed at
-#              R = 15 mm on 12x10 with it: about 100 min alone
+#              R = 15 mm on 12x10 with it, and R = 5 mm on 12x20: about 150 min alone
 #   problem3_converged  the 12x10 own-volume case at half the macro step (1 us) and at half the
 #              rate (2 /s): is the banded answer converged in both? About 65 min alone
 #   problem4_rates  problem4.prm's RVE alone in plane strain
@@ -367,9 +367,10 @@ problem3_seed_box_cases=("problem3_R0.015_le2_12x10_box 12 10 0.015 2e6")
 problem3_fixed_r_cases=("problem3_R0.01_le2_12x10_box 12 10 0.01 2e6" "problem3_R0.01_le2_12x20_box 12 20 0.01 2e6")
 # ... and the same two with each RVE's volume change its own element's ('Volume change' = own,
 # session 39): only the isochoric part of the motion averaged; and R = 15 mm on 12x20 (the band
-# against R on one mesh; R reaches the next column of IPs, 9.83 mm away, there)
+# against R on one mesh; R reaches the next column of IPs, 9.83 mm away, there), and R = 5 mm on
+# 12x20 (session 41: the third radius on that mesh; R reaches only the rows above and below)
 problem3_own_volume_cases=("problem3_R0.01_le2_12x20_box_own 12 20 0.01 2e6" "problem3_R0.01_le2_12x10_box_own 12 10 0.01 2e6"
-                           "problem3_R0.015_le2_12x20_box_own 12 20 0.015 2e6")
+                           "problem3_R0.015_le2_12x20_box_own 12 20 0.015 2e6" "problem3_R0.005_le2_12x20_box_own 12 20 0.005 2e6")
 # ... and session 36's one-IP seed at R = 15 mm on 12x10 (its weak RVE lost its pressure, 330 -> 47 kPa)
 # with it: no seed box
 problem3_own_volume_one_ip_cases=("problem3_R0.015_le2_12x10_own 12 10 0.015 2e6")

@@ -11,6 +11,7 @@ into RESULTS:
   problem3_profiles.png  the band's profile across it: the row means of the
                        shear strain increment of the last 2 % against y, of
                        the elements' F and of what the RVEs saw, for FIXED_R
+  problem3_profiles_r.png  the same for AGAINST_R (R = 5, 10, 15 mm on 12x20)
   problem3.csv         per case and IP at the last row: position, band
                        membership, porosity, coordination, sliding fraction,
                        mean particle rotation
@@ -96,6 +97,10 @@ FIXED_R = ["local", "local, 12x10", "R = 10 mm, local elastic 2 MPa, 12x10, seed
            "R = 10 mm, local elastic 2 MPa, 12x20, seed box",
            "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume",
            "R = 10 mm, local elastic 2 MPa, 12x20, seed box, own volume"]
+# the band against R on one mesh (12x20, the seed box, own volume): problem3_profiles_r.png
+AGAINST_R = ["R = 5 mm, local elastic 2 MPa, 12x20, seed box, own volume",
+             "R = 10 mm, local elastic 2 MPa, 12x20, seed box, own volume",
+             "R = 15 mm, local elastic 2 MPa, 12x20, seed box, own volume"]
 # ... and their profiles' widths (print_profile_widths) with the one-IP seed at R = 15 mm on 12x10
 PROFILE_CASES = FIXED_R + ["R = 5 mm, local elastic 2 MPa, 12x20", "R = 15 mm, local elastic 2 MPa, 12x10",
                            "R = 15 mm, local elastic 2 MPa, 12x10, own volume",
@@ -381,6 +386,7 @@ def main():
     plot_rotation({k: d for k, d in done.items() if d["mean_rotation"] is not None},
                   os.path.join(results, "problem3_rotation.png"))
     plot_profiles(results, [k for k in FIXED_R if k in done], os.path.join(results, "problem3_profiles.png"))
+    plot_profiles(results, [k for k in AGAINST_R if k in done], os.path.join(results, "problem3_profiles_r.png"))
     print_profile_widths(results, [k for k in PROFILE_CASES if k in done])
     print_convergence(results, done)
     with open(os.path.join(results, "problem3.csv"), "w", newline="") as f:

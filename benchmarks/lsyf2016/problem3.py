@@ -279,17 +279,18 @@ def print_profile_widths(results, cases):
 
 
 def print_convergence(results, done):
-    """The banded answer at half the macro step and at half the rate against the reference
+    """The banded answer at smaller macro steps and at half the rate against the reference
     (CONVERGED[0]): tau/p of the mean stress at every row, the weak RVEs' pressure at the end, the
     row-mean profile and the IPs shearing backwards. Rows are equal fractions of the shear, so the
     half-rate run's rows are at the reference's strains."""
     ref, *variants = CONVERGED
+    if ref not in done or not any(k in done for k in variants):
+        return
 
     def at(tp, row):
         return f"{tp[row]:.3f}" if row < len(tp) else "-"
-    if ref not in done or not any(k in done for k in variants):
-        return
-    print("\n## converged? the reference (default macro step, 4 /s) at half the macro step and at half the rate")
+
+    print("\n## converged? the reference (default macro step, 4 /s) at smaller macro steps and at half the rate")
     print("| case | largest difference of tau/p from the reference over the rows (at shear) | tau/p at 4 / 8 % "
           "| weak RVEs' p at the end (kPa) | profile width (mm): elements' / averaged F | its peak at y (mm) "
           f"| IPs below {BACKWARDS} | wall (s) |")

@@ -71,7 +71,9 @@ CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "p
              "problem3_R0.01_le2_12x10_box_own_dt1us",
          "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 2 /s": "problem3_R0.01_le2_12x10_box_own_rate2",
          "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 0.5 us step":
-             "problem3_R0.01_le2_12x10_box_own_dt0.5us"}
+             "problem3_R0.01_le2_12x10_box_own_dt0.5us",
+         "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 1 us step, checks of 5":
+             "problem3_R0.01_le2_12x10_box_own_dt1us_ci5"}
 # the band width against R and the mesh: (R in mm, element height in mm, case)
 # The macro step is fe2dem's default (5 us on 12x5, 2 us on 12x10 and 12x15, 1 us on 12x20) but where the
 # case names it (run.sh problem3_step_cases, problem3_band_cases, problem3_scaled_cases; README,
@@ -107,10 +109,12 @@ PROFILE_CASES = FIXED_R + ["R = 5 mm, local elastic 2 MPa, 12x20", "R = 15 mm, l
                            "R = 15 mm, local elastic 2 MPa, 12x20, seed box, own volume",
                            "R = 5 mm, local elastic 2 MPa, 12x20, seed box, own volume"]
 # the banded answer's convergence (run.sh problem3_converged): the reference (default macro step 2 us,
-# 4 /s) and the same case at half and a quarter of the macro step and at half the rate
+# 4 /s) and the same case at half and a quarter of the macro step (the quarter with servo checks of 5
+# DEM steps, not 10), at half the step with checks of 5, and at half the rate
 CONVERGED = ("R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume",
              "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 1 us step",
              "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 0.5 us step",
+             "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 1 us step, checks of 5",
              "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 2 /s")
 BACKWARDS = -0.01  # a shear increment below this over the last BAND_ROWS rows: an IP shearing backwards
 # the band's directions in simple shear: along the shear, within 20 degrees of x (the local runs' band

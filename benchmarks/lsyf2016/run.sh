@@ -49,8 +49,8 @@
 #              volume its element's), R = 15 mm on 12x20 with it, and session 36's one-IP seed at
 #              R = 15 mm on 12x10 with it, and R = 5 mm on 12x20: about 150 min alone
 #   problem3_converged  the 12x10 own-volume case at half and a quarter of the macro step (1 and
-#              0.5 us) and at half the rate (2 /s): is the banded answer converged in both? About
-#              85 min alone
+#              0.5 us), at 1 us with servo checks of 5 DEM steps, and at half the rate (2 /s): is
+#              the banded answer converged in both? About 105 min alone
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
 #   cv_shear   problem 3's packings (lsyf_300, lsyf_300_weak) sheared at constant volume, fe2dem-rve
@@ -385,11 +385,15 @@ half_rate='s#set End time   = 0.02#set End time   = 0.04#; s#t / 0.02#t / 0.04#g
 # the check is 5 DEM steps here, not 10: problem 3's element alone gave mean ratios 0.535 and 0.540
 # with checks of 5 and 10 at 2 us, results/macro_step.txt): does the width's change from 2 to 1 us settle?
 quarter_step='s#^  set Analysis = dynamic#  set Analysis = dynamic\n  set Time step = 5e-7#; s#set Check interval        = 10#set Check interval        = 5#'
+# ... and half the step with checks of 5 (session 41, after the quarter step widened the band): is
+# that the step's or the check's?
+check5='s#set Check interval        = 10#set Check interval        = 5#'
 problem3_converged() {
   local own="$(problem3_edit 12 10 0.01 2e6); $seed_box; $own_volume"
   band_case problem3_R0.01_le2_12x10_box_own_dt1us "$here/problem3.prm" "$own; $half_step"
   band_case problem3_R0.01_le2_12x10_box_own_rate2 "$here/problem3.prm" "$own; $half_rate"
   band_case problem3_R0.01_le2_12x10_box_own_dt0.5us "$here/problem3.prm" "$own; $quarter_step"
+  band_case problem3_R0.01_le2_12x10_box_own_dt1us_ci5 "$here/problem3.prm" "$own; $half_step; $check5"
 }
 # problem3_edit CELLS_X CELLS_Y RADIUS [E]: problem3.prm's substitutions
 problem3_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; ${4:+$(local_elastic "$4")}"; }

@@ -82,6 +82,11 @@ results="$here/results"
 py=/usr/bin/python3
 source "$here/../common.sh"
 rebase() { sed "s#\.\./\.\./rve_templates#$root/rve_templates#" "$@"; }
+# time_step_edit DT: the sed expression that sets the macro step of a parameter file with
+# 'Analysis = dynamic' (subsection Dynamics) to DT s; check_interval_edit N: the RVE's 'Check
+# interval' from 10 to N DEM steps (a macro step must be whole checks)
+time_step_edit() { echo "s#^  set Analysis = dynamic#  set Analysis = dynamic\n  set Time step = $1#"; }
+check_interval_edit() { echo "s#set Check interval        = 10#set Check interval        = $1#"; }
 mpirun_np() {
   local n=$1; shift
   if [[ $n -eq 1 ]]; then "$@"; else mpirun --allow-run-as-root --oversubscribe -np "$n" "$@"; fi
@@ -316,7 +321,7 @@ problem4() {
   problem4_case problem4_2x4_rate4 2 4 0
   # 1 /s with the macro step of 4 /s, 1 us = 10 DEM steps (one check): the default picks 2 us here,
   # at which the RVEs' stress jumps from row to row (README, 'The rate, and the macro step')
-  problem4_case problem4_2x4_rate1 2 4 0 "s#set End time   = 0.015#set End time   = 0.06#; s#-4.8e-3 \* t / 0.015#-4.8e-3 * t / 0.06#; s#^  set Analysis = dynamic#  set Analysis = dynamic\n  set Time step = 1e-6#"
+  problem4_case problem4_2x4_rate1 2 4 0 "s#set End time   = 0.015#set End time   = 0.06#; s#-4.8e-3 \* t / 0.015#-4.8e-3 * t / 0.06#; $(time_step_edit 1e-6)"
   local c
   for c in "${problem4_cases[@]}"; do problem4_case $c; done
   local name x y radius modulus
@@ -379,15 +384,15 @@ own_volume='s/^\(  set Interaction radius = .*\)$/\1\n  set Volume change = own/
 # ... and problem3_own_volume's 12x10 case (R = 10 mm, the seed box) at half its macro step (1 us =
 # 10 DEM steps; the default picks 2 us) and at half the rate (2 /s, to 8 % in 40 ms, the default
 # step): the banded answer's convergence in the two numerical parameters (session 41)
-half_step='s#^  set Analysis = dynamic#  set Analysis = dynamic\n  set Time step = 1e-6#'
+half_step=$(time_step_edit 1e-6)
 half_rate='s#set End time   = 0.02#set End time   = 0.04#; s#t / 0.02#t / 0.04#g'
 # ... and at a quarter of the macro step (0.5 us = 5 DEM steps; a macro step is whole servo checks, so
 # the check is 5 DEM steps here, not 10: problem 3's element alone gave mean ratios 0.535 and 0.540
 # with checks of 5 and 10 at 2 us, results/macro_step.txt): does the width's change from 2 to 1 us settle?
-quarter_step='s#^  set Analysis = dynamic#  set Analysis = dynamic\n  set Time step = 5e-7#; s#set Check interval        = 10#set Check interval        = 5#'
+quarter_step="$(time_step_edit 5e-7); $(check_interval_edit 5)"
 # ... and half the step with checks of 5 (session 41, after the quarter step widened the band): is
 # that the step's or the check's?
-check5='s#set Check interval        = 10#set Check interval        = 5#'
+check5=$(check_interval_edit 5)
 problem3_converged() {
   local own="$(problem3_edit 12 10 0.01 2e6); $seed_box; $own_volume"
   band_case problem3_R0.01_le2_12x10_box_own_dt1us "$here/problem3.prm" "$own; $half_step"
@@ -444,8 +449,7 @@ problem3() {
   local c name x y dt
   for c in "${problem3_step_cases[@]}"; do
     read -r name x y dt <<< "$c"
-    band_case "$name" "$here/problem3.prm" "$(problem3_edit "$x" "$y" 0)
-      s#^  set Analysis = dynamic#  set Analysis = dynamic\n  set Time step = $dt#"
+    band_case "$name" "$here/problem3.prm" "$(problem3_edit "$x" "$y" 0); $(time_step_edit "$dt")"
   done
   problem3_run "${problem3_band_cases[@]}" "${problem3_scaled_cases[@]}"
   problem3_run --box "${problem3_seed_box_cases[@]}" "${problem3_fixed_r_cases[@]}"
@@ -475,12 +479,11 @@ macro_step() {
   for c in "${macro_step_cases[@]}"; do
     read -r name prm dt ci <<< "$c"
     if [[ $prm == problem3 ]]; then
-      edit="$(problem3_edit 1 1 0); /^subsection Imperfection/,/^end/d
-            s#^  set Analysis = dynamic#  set Analysis = dynamic\n  set Time step = $dt#"
+      edit="$(problem3_edit 1 1 0); /^subsection Imperfection/,/^end/d; $(time_step_edit "$dt")"
     else
       edit="s#ENDT#0.02#g; s#^  set Time step    = 1e-6#  set Time step    = $dt#"
     fi
-    run_macro "$name" "$here/$prm.prm" 1 "$edit; s/set Check interval        = 10/set Check interval        = $ci/"
+    run_macro "$name" "$here/$prm.prm" 1 "$edit; $(check_interval_edit "$ci")"
   done
   # against the single RVE driven continuously (fe2dem-rve, Check interval 10 as the element's RVE; before
   # session 34 it stopped on an overlap at 1.5 % and the reference ran at 50): problem 1's shear

@@ -160,6 +160,12 @@ def weak_ips(d):
     return np.flatnonzero(phi < np.median(phi) - 0.02)
 
 
+def weak_stress(d):
+    """(Love-Weber stress of the weak RVEs [rows, weak IPs, 3, 3], their pressure -tr/3 [rows, weak IPs])."""
+    s = d["sigma_lw"].reshape(len(d["step"]), -1, 3, 3)[:, weak_ips(d)]
+    return s, -np.trace(s, axis1=2, axis2=3) / 3
+
+
 def nonlocal_weights(case_dir, r):
     """The unnormalised weights of subsection Nonlocal in the run's macro.prm at distances @p r (m):
     Wendland's (1 - r/R)^4 (4 r/R + 1), fe2dem's default, or the bell (1 - r^2/R^2)^2; zero
@@ -189,8 +195,7 @@ def print_seed(results, done):
         x = d["ip_position"][:, :2]
         a = nonlocal_weights(os.path.join(results, CASES[k]), np.linalg.norm(x - x[weak[0]], axis=1))
         share = a[weak].sum() / a.sum()
-        s = d["sigma_lw"].reshape(len(d["step"]), -1, 3, 3)[:, weak]
-        p = -np.trace(s, axis1=2, axis2=3) / 3
+        s, p = weak_stress(d)
         F, Fn = (d[f].reshape(len(d["step"]), -1, 3, 3)[-1, weak] for f in ("F", "F_nonlocal"))
 
         def each(v, fmt):
@@ -308,9 +313,7 @@ def print_convergence(results, done):
         n = min(len(tp), len(tp_ref))
         diff = tp[:n] - tp_ref[:n]
         worst = int(np.argmax(np.abs(diff)))
-        weak = weak_ips(d)
-        s = d["sigma_lw"].reshape(len(d["step"]), -1, 3, 3)[-1, weak]
-        p = -np.trace(s, axis1=1, axis2=2) / 3
+        p = weak_stress(d)[1][-1]
         (w, y), (w_seen, y_seen) = (profile(results, k, f) for f in ("F", "F_nonlocal"))
         gamma = shear_increment(d["F"], len(d["step"]))
         wall = float(open(os.path.join(results, CASES[k], "wall_s")).read())

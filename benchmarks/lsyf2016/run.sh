@@ -51,6 +51,9 @@
 #   problem3_converged  the 12x10 own-volume case at half and a quarter of the macro step (1 and
 #              0.5 us), at 1 us with servo checks of 5 DEM steps, and at half the rate (2 /s): is
 #              the banded answer converged in both? About 105 min alone
+#   problem3_perturbed  the same 12x10 case at the default step and rate with the top's
+#              pressure 1-4 parts per million higher: how far the band's width scatters at one
+#              step (session 42). About 70 min alone
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
 #   cv_shear   problem 3's packings (lsyf_300, lsyf_300_weak) sheared at constant volume, fe2dem-rve
@@ -70,7 +73,7 @@
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
 # result exists and whose parameter file is unchanged is not run again.
 #
-#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem3_fixed_r|problem3_own_volume|problem3_converged|problem4|problem4_rates|macro_step|cv_shear|tables|all [--full]
+#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem3_fixed_r|problem3_own_volume|problem3_converged|problem3_perturbed|problem4|problem4_rates|macro_step|cv_shear|tables|all [--full]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -400,6 +403,17 @@ problem3_converged() {
   band_case problem3_R0.01_le2_12x10_box_own_dt0.5us "$here/problem3.prm" "$own; $quarter_step"
   band_case problem3_R0.01_le2_12x10_box_own_dt1us_ci5 "$here/problem3.prm" "$own; $half_step; $check5"
 }
+# ... and the same case at the default step and rate with the top's pressure (Boundary condition 3)
+# 416 kPa times 1 + k 1e-6, k = 1..4 (session 42): the runs differ from the reference in the sixth
+# digit of one load, so what they scatter by is what the DEM's sensitivity to its start makes of
+# it, the floor under any width difference between runs at one step
+problem3_perturbed() {
+  local own="$(problem3_edit 12 10 0.01 2e6); $seed_box; $own_volume" k
+  for k in 1 2 3 4; do
+    band_case "problem3_R0.01_le2_12x10_box_own_p$k" "$here/problem3.prm" \
+      "$own; s#set Function   = 4.16e5#set Function   = $(awk -v k=$k 'BEGIN { printf "%.3f", 4.16e5 * (1 + k * 1e-6) }')#"
+  done
+}
 # problem3_edit CELLS_X CELLS_Y RADIUS [E]: problem3.prm's substitutions
 problem3_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; ${4:+$(local_elastic "$4")}"; }
 # submit_full NAME PRM [sed expression]: the case at the paper's size (lsyf_4096) in
@@ -456,6 +470,7 @@ problem3() {
   problem3_run --box --own "${problem3_own_volume_cases[@]}"
   problem3_run --own "${problem3_own_volume_one_ip_cases[@]}"
   problem3_converged
+  problem3_perturbed
   problem3_table
 }
 problem3_table() {
@@ -543,6 +558,7 @@ case "$what" in
   problem3_own_volume) problem3_run --box --own "${problem3_own_volume_cases[@]}"
                        problem3_run --own "${problem3_own_volume_one_ip_cases[@]}"; problem3_table ;;
   problem3_converged) problem3_converged; problem3_table ;;
+  problem3_perturbed) problem3_perturbed; problem3_table ;;
   problem4) if [[ -n $full ]]; then problem4_full; else problem4; fi ;;
   problem4_rates) problem4_rates ;;
   macro_step) macro_step ;;

@@ -52,8 +52,8 @@
 #              0.5 us), at 1 us with servo checks of 5 DEM steps, and at half the rate (2 /s): is
 #              the banded answer converged in both? About 105 min alone
 #   problem3_perturbed  the same 12x10 case at the default step and rate with the top's
-#              pressure 1-4 parts per million higher: how far the band's width scatters at one
-#              step (session 42). About 70 min alone
+#              pressure 1-4 parts per million higher, and at the quarter step with 1-3: how far
+#              the band's width scatters at one step (session 42). About 140 min alone
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
 #   cv_shear   problem 3's packings (lsyf_300, lsyf_300_weak) sheared at constant volume, fe2dem-rve
@@ -406,12 +406,16 @@ problem3_converged() {
 # ... and the same case at the default step and rate with the top's pressure (Boundary condition 3)
 # 416 kPa times 1 + k 1e-6, k = 1..4 (session 42): the runs differ from the reference in the sixth
 # digit of one load, so what they scatter by is what the DEM's sensitivity to its start makes of
-# it, the floor under any width difference between runs at one step
+# it, the floor under any width difference between runs at one step; and the quarter-step case
+# (0.5 us, checks of 5) with k = 1..3: is the step's widening more than that scatter?
+top_pressure_edit() { echo "s#set Function   = 4.16e5#set Function   = $(awk -v k="$1" 'BEGIN { printf "%.3f", 4.16e5 * (1 + k * 1e-6) }')#"; }
 problem3_perturbed() {
   local own="$(problem3_edit 12 10 0.01 2e6); $seed_box; $own_volume" k
   for k in 1 2 3 4; do
-    band_case "problem3_R0.01_le2_12x10_box_own_p$k" "$here/problem3.prm" \
-      "$own; s#set Function   = 4.16e5#set Function   = $(awk -v k=$k 'BEGIN { printf "%.3f", 4.16e5 * (1 + k * 1e-6) }')#"
+    band_case "problem3_R0.01_le2_12x10_box_own_p$k" "$here/problem3.prm" "$own; $(top_pressure_edit $k)"
+  done
+  for k in 1 2 3; do
+    band_case "problem3_R0.01_le2_12x10_box_own_dt0.5us_p$k" "$here/problem3.prm" "$own; $quarter_step; $(top_pressure_edit $k)"
   done
 }
 # problem3_edit CELLS_X CELLS_Y RADIUS [E]: problem3.prm's substitutions

@@ -14,17 +14,18 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import band_width as bw  # noqa: E402
 
 
-def inplane_band(history, rows, band_angles=range(180), field="F"):
+def inplane_band(history, rows, band_angles=range(180), field="F", end=-1):
     """(reference positions [n, 2], gamma [n], width, angle, middle) of the band in the increment of
-    the in-plane (x, y) block of `field` (F, or F_nonlocal: what the RVEs saw) over the last `rows`
-    rows of history.h5 (benchmarks/lbs2018/
+    the in-plane (x, y) block of `field` (F, or F_nonlocal: what the RVEs saw) over the `rows` rows
+    of history.h5 up to row index `end` (the last by default) (benchmarks/lbs2018/
     band_width.py: width the full width at half maximum of the profile across the band, angle
     from x in degrees among `band_angles`, middle the profile's peak position along the band's
     normal)."""
     with h5py.File(history, "r") as h:
         x = h["ip_position"][()][:, :2]
         F = h[field if field in h else "F"][()].reshape(len(h["step"]), -1, 3, 3)[:, :, :2, :2]
-    grad = np.einsum("nij,njk->nik", F[-1] - F[-1 - rows], np.linalg.inv(F[-1 - rows]))
+    end = end % len(F)
+    grad = np.einsum("nij,njk->nik", F[end] - F[end - rows], np.linalg.inv(F[end - rows]))
     gamma = bw.shear_strain(grad)
     width, angle, (centres, means) = bw.band_width(x, gamma, band_angles=band_angles)
     return x, gamma, width, angle, centres[int(np.argmax(means))]

@@ -12,6 +12,8 @@ into RESULTS:
                        shear strain increment of the last 2 % against y, of
                        the elements' F and of what the RVEs saw, for FIXED_R
   problem3_profiles_r.png  the same for AGAINST_R (R = 5, 10, 15 mm on 12x20)
+  problem3_width_history.png  the elements' F's profile width of each 4-row
+                       window along the runs of CONVERGED and ENSEMBLES
   problem3.csv         per case and IP at the last row: position, band
                        membership, porosity, coordination, sliding fraction,
                        mean particle rotation
@@ -73,7 +75,11 @@ CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "p
          "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 0.5 us step":
              "problem3_R0.01_le2_12x10_box_own_dt0.5us",
          "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 1 us step, checks of 5":
-             "problem3_R0.01_le2_12x10_box_own_dt1us_ci5"}
+             "problem3_R0.01_le2_12x10_box_own_dt1us_ci5",
+         **{f"R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, top pressure +{k} ppm":
+            f"problem3_R0.01_le2_12x10_box_own_p{k}" for k in range(1, 5)},
+         **{f"R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 0.5 us step, top pressure +{k} ppm":
+            f"problem3_R0.01_le2_12x10_box_own_dt0.5us_p{k}" for k in range(1, 4)}}
 # the band width against R and the mesh: (R in mm, element height in mm, case)
 # The macro step is fe2dem's default (5 us on 12x5, 2 us on 12x10 and 12x15, 1 us on 12x20) but where the
 # case names it (run.sh problem3_step_cases, problem3_band_cases, problem3_scaled_cases; README,
@@ -116,6 +122,11 @@ CONVERGED = ("R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume",
              "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 0.5 us step",
              "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 1 us step, checks of 5",
              "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 2 /s")
+# ... and the reference with the top's pressure 1-4 parts per million higher, and the quarter step with
+# 1-3 (run.sh problem3_perturbed): the scatter at one step and rate, {step: (unperturbed, perturbed)}
+ENSEMBLES = {step: (base, tuple(k for k in CASES if k.startswith(base + ", top pressure")))
+             for step, base in (("2 us", CONVERGED[0]), ("0.5 us", CONVERGED[2]))}
+PERTURBED = sum((e[1] for e in ENSEMBLES.values()), ())
 BACKWARDS = -0.01  # a shear increment below this over the last BAND_ROWS rows: an IP shearing backwards
 # the band's directions in simple shear: along the shear, within 20 degrees of x (the local runs' band
 # is at 4 degrees); among all directions the finder can return a hot spot around the weak RVE
@@ -261,12 +272,12 @@ def plot_profiles(results, cases, path):
     fig.savefig(path, dpi=110)
 
 
-def profile(results, k, field):
+def profile(results, k, field, end=-1, rows=BAND_ROWS):
     """(width above half its peak, y of the peak) in m of case @p k's row-mean profile of the shear
-    strain increment over the last BAND_ROWS rows, of @p field (F: the elements', F_nonlocal: the
-    averaged F)."""
-    x, gamma, _, _, _ = inplane_band(os.path.join(results, CASES[k], "out", "history.h5"), BAND_ROWS,
-                                     ALONG_X, field)
+    strain increment over the @p rows rows up to row index @p end (the last by default), of
+    @p field (F: the elements', F_nonlocal: the averaged F)."""
+    x, gamma, _, _, _ = inplane_band(os.path.join(results, CASES[k], "out", "history.h5"), rows,
+                                     ALONG_X, field, end)
     y, means = row_means(x, gamma)
     return bw.half_maximum_width(y, means), y[int(np.argmax(means))]
 
@@ -320,6 +331,99 @@ def print_convergence(results, done):
         print(f"| {k} | {diff[worst]:+.4f} ({100 * g[worst]:.1f} %) | {at(tp, 8)} / {at(tp, 16)} "
               f"| {', '.join(f'{v / 1e3:.0f}' for v in p)} | {1e3 * w:.1f} / {1e3 * w_seen:.1f} "
               f"| {1e3 * y:.1f} / {1e3 * y_seen:.1f} | {int((gamma < BACKWARDS).sum())} of {len(gamma)} | {wall:.0f} |")
+
+
+def scatter_groups(done):
+    """{label: the finished runs}: each of ENSEMBLES with its unperturbed run and at least one perturbed
+    one, and the step series at 4 /s (CONVERGED but the half-rate run)."""
+    groups = {}
+    for step, (base, perturbed) in ENSEMBLES.items():
+        members = [k for k in (base, *perturbed) if k in done]
+        if base in done and len(members) >= 2:
+            groups[f"at {step}"] = members
+    if groups:
+        groups["the step series at 4 /s (2, 1, 0.5 us, 1 us with checks of 5)"] = [k for k in CONVERGED[:-1] if k in done]
+    return groups
+
+
+def print_scatter(results, done, groups):
+    """The band's width at one macro step and rate: each ensemble's runs (@p groups, scatter_groups)
+    against its unperturbed one; the end widths' mean and scatter of every group, and the difference
+    of the two steps' means."""
+    ensembles = {label: members for label, members in groups.items() if label.startswith("at ")}
+    if not ensembles:
+        return
+    print("\n## the width at one step: a run and its runs with the top's pressure 1-4 ppm higher")
+    print("| case | largest difference of tau/p from the unperturbed run over the rows (at shear) "
+          "| largest difference of an IP's stress from the unperturbed run's at the end, over p "
+          "| profile width (mm): elements' / averaged F | its peak at y (mm) | wall (s) |")
+    print("|---|---|---|---|---|---|")
+    for members in ensembles.values():
+        base = done[members[0]]
+        _, tp_base = curve(base)
+        s_base = base["sigma"][-1]
+        p_base = -(s_base[:, 0] + s_base[:, 4] + s_base[:, 8]).mean() / 3
+        for k in members:
+            d = done[k]
+            g, tp = curve(d)
+            n = min(len(tp), len(tp_base))
+            diff = tp[:n] - tp_base[:n]
+            worst = int(np.argmax(np.abs(diff)))
+            ds = (np.linalg.norm(d["sigma"][-1] - s_base, axis=1).max() / p_base
+                  if len(d["step"]) == len(base["step"]) else np.nan)
+            (w, y), (w_seen, y_seen) = (profile(results, k, f) for f in ("F", "F_nonlocal"))
+            wall = float(open(os.path.join(results, CASES[k], "wall_s")).read())
+            print(f"| {k} | {diff[worst]:+.4f} ({100 * g[worst]:.1f} %) | {100 * ds:.1f} % "
+                  f"| {1e3 * w:.1f} / {1e3 * w_seen:.1f} | {1e3 * y:.1f} / {1e3 * y_seen:.1f} | {wall:.0f} |")
+    # the last BAND_ROWS rows (the measure of every table) and the last 2 BAND_ROWS, from about the
+    # peak of tau/p (4-5 %): a longer window averages the band's wandering along the run
+    for rows in (BAND_ROWS, 2 * BAND_ROWS):
+        print(f"\nend widths over the last {rows} rows ({100 * SHEAR * rows / LOAD_STEPS:g} % of shear), "
+              "row-mean profile above half its peak:")
+        stats = {}
+        for label, cases in groups.items():
+            w = 1e3 * np.array([[profile(results, k, f, -1, rows)[0] for f in ("F", "F_nonlocal")] for k in cases])
+            stats[label] = w
+            print(f"- {label}, {len(cases)} runs: elements' F {w[:, 0].min():.1f}-{w[:, 0].max():.1f} mm, span "
+                  f"{np.ptp(w[:, 0]):.1f}, mean {w[:, 0].mean():.1f}, standard deviation {w[:, 0].std(ddof=1):.1f}; "
+                  f"averaged F {w[:, 1].min():.1f}-{w[:, 1].max():.1f} mm, span {np.ptp(w[:, 1]):.1f}, "
+                  f"mean {w[:, 1].mean():.1f}, standard deviation {w[:, 1].std(ddof=1):.1f}")
+        if len(ensembles) == 2:
+            (la, a), (lb, b) = ((label, stats[label]) for label in ensembles)
+            se = np.sqrt(a.var(axis=0, ddof=1) / len(a) + b.var(axis=0, ddof=1) / len(b))
+            dm = b.mean(axis=0) - a.mean(axis=0)
+            print(f"- mean {lb} minus mean {la}: {dm[0]:+.1f} mm (elements' F), "
+                  f"{dm[1]:+.1f} mm (averaged F); standard error of the difference {se[0]:.1f} / {se[1]:.1f} mm")
+
+
+def print_width_history(results, done, groups, path):
+    """The elements' F's profile width of each BAND_ROWS window along every run of @p groups
+    (scatter_groups), the span of each group at each window (table), plotted into @p path."""
+    if not groups:
+        return
+    cases = list(dict.fromkeys(k for members in groups.values() for k in members))
+    ref = CONVERGED[0]
+    ends_at = range(BAND_ROWS, len(done[ref]["step"]))
+    history = {k: [1e3 * profile(results, k, "F", e)[0] if e < len(done[k]["step"]) else np.nan for e in ends_at]
+               for k in cases}
+    print(f"\n## the width along the run: the elements' F's row-mean profile over the {BAND_ROWS} rows up to each "
+          "row (mm)")
+    print("| case | " + " | ".join(f"{100 * SHEAR * (e + 1) / LOAD_STEPS:g} %" for e in ends_at) + " |")
+    print("|---" * (len(ends_at) + 1) + "|")
+    for k in cases:
+        print(f"| {k} | " + " | ".join(f"{v:.1f}" for v in history[k]) + " |")
+    for label, group in groups.items():
+        h = np.array([history[k] for k in group])
+        print(f"| span, {label} | " + " | ".join(f"{v:.1f}" for v in np.ptp(h, axis=0)) + " |")
+    plt.figure(figsize=(6, 4))
+    for k in cases:
+        plt.plot([100 * SHEAR * (e + 1) / LOAD_STEPS for e in ends_at], history[k],
+                 "--" if k in PERTURBED else "-o", ms=3, label=k.replace("R = 10 mm, local elastic 2 MPa, 12x10, ", ""))
+    plt.xlabel(f"shear strain at the end of the {BAND_ROWS}-row window (%)")
+    plt.ylabel("row-mean profile width, elements' F (mm)")
+    plt.legend(fontsize=5)
+    plt.tight_layout()
+    plt.savefig(path, dpi=120)
 
 
 def print_softening(results, done):
@@ -397,6 +501,9 @@ def main():
     plot_profiles(results, [k for k in AGAINST_R if k in done], os.path.join(results, "problem3_profiles_r.png"))
     print_profile_widths(results, [k for k in PROFILE_CASES if k in done])
     print_convergence(results, done)
+    groups = scatter_groups(done)
+    print_scatter(results, done, groups)
+    print_width_history(results, done, groups, os.path.join(results, "problem3_width_history.png"))
     with open(os.path.join(results, "problem3.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["case", "x", "y", "in_band", "porosity", "coordination", "sliding_fraction", "mean_rotation"])

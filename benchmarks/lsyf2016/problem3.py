@@ -298,6 +298,15 @@ def print_profile_widths(results, cases):
         print(f"| {k} | " + " | ".join(cells) + " |")
 
 
+def largest_difference(d, base):
+    """(difference of tau/p from run @p base's at the row where it is largest, that row's shear strain),
+    over the rows both runs have."""
+    (g, tp), (_, tp_base) = curve(d), curve(base)
+    n = min(len(tp), len(tp_base))
+    worst = int(np.argmax(np.abs(tp[:n] - tp_base[:n])))
+    return tp[worst] - tp_base[worst], g[worst]
+
+
 def print_convergence(results, done):
     """The banded answer at smaller macro steps and at half the rate against the reference
     (CONVERGED[0]): tau/p of the mean stress at every row, the weak RVEs' pressure at the end, the
@@ -307,7 +316,7 @@ def print_convergence(results, done):
     if ref not in done or not any(k in done for k in variants):
         return
 
-    def at(tp, row):
+    def at_row(tp, row):
         return f"{tp[row]:.3f}" if row < len(tp) else "-"
 
     print("\n## converged? the reference (default macro step, 4 /s) at smaller macro steps and at half the rate")
@@ -315,42 +324,36 @@ def print_convergence(results, done):
           "| weak RVEs' p at the end (kPa) | profile width (mm): elements' / averaged F | its peak at y (mm) "
           f"| IPs below {BACKWARDS} | wall (s) |")
     print("|---|---|---|---|---|---|---|---|")
-    _, tp_ref = curve(done[ref])
     for k in (ref, *variants):
         if k not in done:
             continue
         d = done[k]
-        g, tp = curve(d)
-        n = min(len(tp), len(tp_ref))
-        diff = tp[:n] - tp_ref[:n]
-        worst = int(np.argmax(np.abs(diff)))
+        _, tp = curve(d)
+        diff, at = largest_difference(d, done[ref])
         p = weak_stress(d)[1][-1]
         (w, y), (w_seen, y_seen) = (profile(results, k, f) for f in ("F", "F_nonlocal"))
         gamma = shear_increment(d["F"], len(d["step"]))
         wall = float(open(os.path.join(results, CASES[k], "wall_s")).read())
-        print(f"| {k} | {diff[worst]:+.4f} ({100 * g[worst]:.1f} %) | {at(tp, 8)} / {at(tp, 16)} "
+        print(f"| {k} | {diff:+.4f} ({100 * at:.1f} %) | {at_row(tp, 8)} / {at_row(tp, 16)} "
               f"| {', '.join(f'{v / 1e3:.0f}' for v in p)} | {1e3 * w:.1f} / {1e3 * w_seen:.1f} "
               f"| {1e3 * y:.1f} / {1e3 * y_seen:.1f} | {int((gamma < BACKWARDS).sum())} of {len(gamma)} | {wall:.0f} |")
 
 
-def scatter_groups(done):
-    """{label: the finished runs}: each of ENSEMBLES with its unperturbed run and at least one perturbed
-    one, and the step series at 4 /s (CONVERGED but the half-rate run)."""
-    groups = {}
+def ensemble_runs(done):
+    """{"at STEP": the finished runs}: each of ENSEMBLES with its unperturbed run and at least one
+    perturbed one."""
+    ensembles = {}
     for step, (base, perturbed) in ENSEMBLES.items():
         members = [k for k in (base, *perturbed) if k in done]
         if base in done and len(members) >= 2:
-            groups[f"at {step}"] = members
-    if groups:
-        groups["the step series at 4 /s (2, 1, 0.5 us, 1 us with checks of 5)"] = [k for k in CONVERGED[:-1] if k in done]
-    return groups
+            ensembles[f"at {step}"] = members
+    return ensembles
 
 
-def print_scatter(results, done, groups):
-    """The band's width at one macro step and rate: each ensemble's runs (@p groups, scatter_groups)
-    against its unperturbed one; the end widths' mean and scatter of every group, and the difference
-    of the two steps' means."""
-    ensembles = {label: members for label, members in groups.items() if label.startswith("at ")}
+def print_scatter(results, done, ensembles, groups):
+    """The band's width at one macro step and rate: each of @p ensembles (ensemble_runs) against its
+    unperturbed run; the end widths' mean and scatter of every one of @p groups (the ensembles and
+    the step series), and the difference of the two steps' means."""
     if not ensembles:
         return
     print("\n## the width at one step: a run and its runs with the top's pressure 1-4 ppm higher")
@@ -360,20 +363,16 @@ def print_scatter(results, done, groups):
     print("|---|---|---|---|---|---|")
     for members in ensembles.values():
         base = done[members[0]]
-        _, tp_base = curve(base)
         s_base = base["sigma"][-1]
         p_base = -(s_base[:, 0] + s_base[:, 4] + s_base[:, 8]).mean() / 3
         for k in members:
             d = done[k]
-            g, tp = curve(d)
-            n = min(len(tp), len(tp_base))
-            diff = tp[:n] - tp_base[:n]
-            worst = int(np.argmax(np.abs(diff)))
+            diff, at = largest_difference(d, base)
             ds = (np.linalg.norm(d["sigma"][-1] - s_base, axis=1).max() / p_base
                   if len(d["step"]) == len(base["step"]) else np.nan)
             (w, y), (w_seen, y_seen) = (profile(results, k, f) for f in ("F", "F_nonlocal"))
             wall = float(open(os.path.join(results, CASES[k], "wall_s")).read())
-            print(f"| {k} | {diff[worst]:+.4f} ({100 * g[worst]:.1f} %) | {100 * ds:.1f} % "
+            print(f"| {k} | {diff:+.4f} ({100 * at:.1f} %) | {100 * ds:.1f} % "
                   f"| {1e3 * w:.1f} / {1e3 * w_seen:.1f} | {1e3 * y:.1f} / {1e3 * y_seen:.1f} | {wall:.0f} |")
     # the last BAND_ROWS rows (the measure of every table) and the last 2 BAND_ROWS, from about the
     # peak of tau/p (4-5 %): a longer window averages the band's wandering along the run
@@ -398,17 +397,19 @@ def print_scatter(results, done, groups):
 
 def print_width_history(results, done, groups, path):
     """The elements' F's profile width of each BAND_ROWS window along every run of @p groups
-    (scatter_groups), the span of each group at each window (table), plotted into @p path."""
+    (the ensembles and the step series), the span of each group at each window (table), plotted
+    into @p path."""
     if not groups:
         return
     cases = list(dict.fromkeys(k for members in groups.values() for k in members))
     ref = CONVERGED[0]
     ends_at = range(BAND_ROWS, len(done[ref]["step"]))
+    strains = [100 * SHEAR * (e + 1) / LOAD_STEPS for e in ends_at]
     history = {k: [1e3 * profile(results, k, "F", e)[0] if e < len(done[k]["step"]) else np.nan for e in ends_at]
                for k in cases}
     print(f"\n## the width along the run: the elements' F's row-mean profile over the {BAND_ROWS} rows up to each "
           "row (mm)")
-    print("| case | " + " | ".join(f"{100 * SHEAR * (e + 1) / LOAD_STEPS:g} %" for e in ends_at) + " |")
+    print("| case | " + " | ".join(f"{v:g} %" for v in strains) + " |")
     print("|---" * (len(ends_at) + 1) + "|")
     for k in cases:
         print(f"| {k} | " + " | ".join(f"{v:.1f}" for v in history[k]) + " |")
@@ -417,7 +418,7 @@ def print_width_history(results, done, groups, path):
         print(f"| span, {label} | " + " | ".join(f"{v:.1f}" for v in np.ptp(h, axis=0)) + " |")
     plt.figure(figsize=(6, 4))
     for k in cases:
-        plt.plot([100 * SHEAR * (e + 1) / LOAD_STEPS for e in ends_at], history[k],
+        plt.plot(strains, history[k],
                  "--" if k in PERTURBED else "-o", ms=3, label=k.replace("R = 10 mm, local elastic 2 MPa, 12x10, ", ""))
     plt.xlabel(f"shear strain at the end of the {BAND_ROWS}-row window (%)")
     plt.ylabel("row-mean profile width, elements' F (mm)")
@@ -501,8 +502,11 @@ def main():
     plot_profiles(results, [k for k in AGAINST_R if k in done], os.path.join(results, "problem3_profiles_r.png"))
     print_profile_widths(results, [k for k in PROFILE_CASES if k in done])
     print_convergence(results, done)
-    groups = scatter_groups(done)
-    print_scatter(results, done, groups)
+    ensembles = ensemble_runs(done)
+    groups = dict(ensembles)
+    if ensembles:
+        groups["the step series at 4 /s (2, 1, 0.5 us, 1 us with checks of 5)"] = [k for k in CONVERGED[:-1] if k in done]
+    print_scatter(results, done, ensembles, groups)
     print_width_history(results, done, groups, os.path.join(results, "problem3_width_history.png"))
     with open(os.path.join(results, "problem3.csv"), "w", newline="") as f:
         w = csv.writer(f)

@@ -396,8 +396,12 @@ quarter_step="$(time_step_edit 5e-7); $(check_interval_edit 5)"
 # ... and half the step with checks of 5 (session 41, after the quarter step widened the band): is
 # that the step's or the check's?
 check5=$(check_interval_edit 5)
+# the edits of that case (problem3_own_volume's 12x10 case), the base of problem3_converged and
+# problem3_perturbed
+own_12x10() { echo "$(problem3_edit 12 10 0.01 2e6); $seed_box; $own_volume"; }
 problem3_converged() {
-  local own="$(problem3_edit 12 10 0.01 2e6); $seed_box; $own_volume"
+  local own
+  own=$(own_12x10)
   band_case problem3_R0.01_le2_12x10_box_own_dt1us "$here/problem3.prm" "$own; $half_step"
   band_case problem3_R0.01_le2_12x10_box_own_rate2 "$here/problem3.prm" "$own; $half_rate"
   band_case problem3_R0.01_le2_12x10_box_own_dt0.5us "$here/problem3.prm" "$own; $quarter_step"
@@ -410,7 +414,8 @@ problem3_converged() {
 # (0.5 us, checks of 5) with k = 1..3: is the step's widening more than that scatter?
 top_pressure_edit() { echo "s#set Function   = 4.16e5#set Function   = $(awk -v k="$1" 'BEGIN { printf "%.3f", 4.16e5 * (1 + k * 1e-6) }')#"; }
 problem3_perturbed() {
-  local own="$(problem3_edit 12 10 0.01 2e6); $seed_box; $own_volume" k
+  local own k
+  own=$(own_12x10)
   for k in 1 2 3 4; do
     band_case "problem3_R0.01_le2_12x10_box_own_p$k" "$here/problem3.prm" "$own; $(top_pressure_edit $k)"
   done

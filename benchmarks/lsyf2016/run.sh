@@ -54,6 +54,9 @@
 #   problem3_perturbed  the same 12x10 case at the default step and rate with the top's
 #              pressure 1-4 parts per million higher, and at the quarter step with 1-3: how far
 #              the band's width scatters at one step (session 42). About 140 min alone
+#   problem3_fine_step  the same ensemble (unperturbed, +1-3 ppm) at 0.2 us, 2 DEM steps per macro
+#              step with servo checks of 2: does the band's mean width settle in the step? (session
+#              43). About 33 min per run alone, 130 min in all
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
 #   cv_shear   problem 3's packings (lsyf_300, lsyf_300_weak) sheared at constant volume, fe2dem-rve
@@ -73,7 +76,7 @@
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
 # result exists and whose parameter file is unchanged is not run again.
 #
-#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem3_fixed_r|problem3_own_volume|problem3_converged|problem3_perturbed|problem4|problem4_rates|macro_step|cv_shear|tables|all [--full]
+#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem3_fixed_r|problem3_own_volume|problem3_converged|problem3_perturbed|problem3_fine_step|problem4|problem4_rates|macro_step|cv_shear|tables|all [--full]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -423,6 +426,18 @@ problem3_perturbed() {
     band_case "problem3_R0.01_le2_12x10_box_own_dt0.5us_p$k" "$here/problem3.prm" "$own; $quarter_step; $(top_pressure_edit $k)"
   done
 }
+# ... and the same ensemble at a tenth of the default step (0.2 us = 2 DEM steps, servo checks of 2;
+# session 43): after 2 -> 0.5 us widened the band by 4.6 +- 2.1 mm, does the mean width settle? The
+# unperturbed run first, then k = 1..3
+fifth_step="$(time_step_edit 2e-7); $(check_interval_edit 2)"
+problem3_fine_step() {
+  local own k
+  own=$(own_12x10)
+  band_case problem3_R0.01_le2_12x10_box_own_dt0.2us "$here/problem3.prm" "$own; $fifth_step"
+  for k in 1 2 3; do
+    band_case "problem3_R0.01_le2_12x10_box_own_dt0.2us_p$k" "$here/problem3.prm" "$own; $fifth_step; $(top_pressure_edit $k)"
+  done
+}
 # problem3_edit CELLS_X CELLS_Y RADIUS [E]: problem3.prm's substitutions
 problem3_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; ${4:+$(local_elastic "$4")}"; }
 # submit_full NAME PRM [sed expression]: the case at the paper's size (lsyf_4096) in
@@ -480,6 +495,7 @@ problem3() {
   problem3_run --own "${problem3_own_volume_one_ip_cases[@]}"
   problem3_converged
   problem3_perturbed
+  problem3_fine_step
   problem3_table
 }
 problem3_table() {
@@ -568,6 +584,7 @@ case "$what" in
                        problem3_run --own "${problem3_own_volume_one_ip_cases[@]}"; problem3_table ;;
   problem3_converged) problem3_converged; problem3_table ;;
   problem3_perturbed) problem3_perturbed; problem3_table ;;
+  problem3_fine_step) problem3_fine_step; problem3_table ;;
   problem4) if [[ -n $full ]]; then problem4_full; else problem4; fi ;;
   problem4_rates) problem4_rates ;;
   macro_step) macro_step ;;

@@ -79,7 +79,11 @@ CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "p
          **{f"R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, top pressure +{k} ppm":
             f"problem3_R0.01_le2_12x10_box_own_p{k}" for k in range(1, 5)},
          **{f"R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 0.5 us step, top pressure +{k} ppm":
-            f"problem3_R0.01_le2_12x10_box_own_dt0.5us_p{k}" for k in range(1, 4)}}
+            f"problem3_R0.01_le2_12x10_box_own_dt0.5us_p{k}" for k in range(1, 4)},
+         "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 0.2 us step":
+             "problem3_R0.01_le2_12x10_box_own_dt0.2us",
+         **{f"R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 0.2 us step, top pressure +{k} ppm":
+            f"problem3_R0.01_le2_12x10_box_own_dt0.2us_p{k}" for k in range(1, 4)}}
 # the band width against R and the mesh: (R in mm, element height in mm, case)
 # The macro step is fe2dem's default (5 us on 12x5, 2 us on 12x10 and 12x15, 1 us on 12x20) but where the
 # case names it (run.sh problem3_step_cases, problem3_band_cases, problem3_scaled_cases; README,
@@ -122,10 +126,13 @@ CONVERGED = ("R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume",
              "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 0.5 us step",
              "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 1 us step, checks of 5",
              "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 2 /s")
-# ... and the reference with the top's pressure 1-4 parts per million higher, and the quarter step with
-# 1-3 (run.sh problem3_perturbed): the scatter at one step and rate, {step: (unperturbed, perturbed)}
+# ... and at a tenth of the default step (0.2 us = 2 DEM steps, servo checks of 2; run.sh problem3_fine_step)
+FINE_STEP = "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 0.2 us step"
+# ... and the reference with the top's pressure 1-4 parts per million higher, the quarter step with 1-3
+# (run.sh problem3_perturbed) and the tenth with 1-3 (problem3_fine_step): the scatter at one step and
+# rate, {step: (unperturbed, perturbed)}, from the largest step to the smallest
 ENSEMBLES = {step: (base, tuple(k for k in CASES if k.startswith(base + ", top pressure")))
-             for step, base in (("2 us", CONVERGED[0]), ("0.5 us", CONVERGED[2]))}
+             for step, base in (("2 us", CONVERGED[0]), ("0.5 us", CONVERGED[2]), ("0.2 us", FINE_STEP))}
 PERTURBED = sum((e[1] for e in ENSEMBLES.values()), ())
 BACKWARDS = -0.01  # a shear increment below this over the last BAND_ROWS rows: an IP shearing backwards
 # the band's directions in simple shear: along the shear, within 20 degrees of x (the local runs' band
@@ -309,10 +316,10 @@ def largest_difference(d, base):
 
 def print_convergence(results, done):
     """The banded answer at smaller macro steps and at half the rate against the reference
-    (CONVERGED[0]): tau/p of the mean stress at every row, the weak RVEs' pressure at the end, the
-    row-mean profile and the IPs shearing backwards. Rows are equal fractions of the shear, so the
-    half-rate run's rows are at the reference's strains."""
-    ref, *variants = CONVERGED
+    (CONVERGED[0]; and FINE_STEP): tau/p of the mean stress at every row, the weak RVEs' pressure at
+    the end, the row-mean profile and the IPs shearing backwards. Rows are equal fractions of the
+    shear, so the half-rate run's rows are at the reference's strains."""
+    ref, *variants = *CONVERGED, FINE_STEP
     if ref not in done or not any(k in done for k in variants):
         return
 
@@ -353,7 +360,9 @@ def ensemble_runs(done):
 def print_scatter(results, done, ensembles, groups):
     """The band's width at one macro step and rate: each of @p ensembles (ensemble_runs) against its
     unperturbed run; the end widths' mean and scatter of every one of @p groups (the ensembles and
-    the step series), and the difference of the two steps' means."""
+    the step series), and each smaller step's mean against the next larger one's: the means'
+    difference, and the largest difference of a run's tau/p from the larger step's unperturbed run
+    and of the two ensembles' mean tau/p."""
     if not ensembles:
         return
     print("\n## the width at one step: a run and its runs with the top's pressure 1-4 ppm higher")
@@ -387,12 +396,25 @@ def print_scatter(results, done, ensembles, groups):
                   f"{np.ptp(w[:, 0]):.1f}, mean {w[:, 0].mean():.1f}, standard deviation {w[:, 0].std(ddof=1):.1f}; "
                   f"averaged F {w[:, 1].min():.1f}-{w[:, 1].max():.1f} mm, span {np.ptp(w[:, 1]):.1f}, "
                   f"mean {w[:, 1].mean():.1f}, standard deviation {w[:, 1].std(ddof=1):.1f}")
-        if len(ensembles) == 2:
-            (la, a), (lb, b) = ((label, stats[label]) for label in ensembles)
+        labels = list(ensembles)
+        for la, lb in zip(labels, labels[1:]):
+            a, b = stats[la], stats[lb]
             se = np.sqrt(a.var(axis=0, ddof=1) / len(a) + b.var(axis=0, ddof=1) / len(b))
             dm = b.mean(axis=0) - a.mean(axis=0)
             print(f"- mean {lb} minus mean {la}: {dm[0]:+.1f} mm (elements' F), "
                   f"{dm[1]:+.1f} mm (averaged F); standard error of the difference {se[0]:.1f} / {se[1]:.1f} mm")
+    labels = list(ensembles)
+    if len(labels) > 1:
+        print("\ntau/p of each smaller step against the next larger one:")
+    for la, lb in zip(labels, labels[1:]):
+        base = done[ensembles[la][0]]
+        diff, at = max((largest_difference(done[k], base) for k in ensembles[lb]), key=lambda r: abs(r[0]))
+        curves = {label: [curve(done[k])[1] for k in ensembles[label]] for label in (la, lb)}
+        rows = min(len(c) for group in curves.values() for c in group)
+        mean_a, mean_b = (np.mean([c[:rows] for c in curves[label]], axis=0) for label in (la, lb))
+        print(f"- {lb} against {la}: the largest difference of a run's from the unperturbed run {la} "
+              f"{diff:+.4f} (at {100 * at:.1f} %); the ensembles' mean tau/p within "
+              f"{np.abs(mean_b - mean_a).max():.4f} at every row")
 
 
 def print_width_history(results, done, groups, path):

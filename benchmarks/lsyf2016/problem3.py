@@ -403,6 +403,8 @@ def print_scatter(results, done, ensembles, groups):
             dm = b.mean(axis=0) - a.mean(axis=0)
             print(f"- mean {lb} minus mean {la}: {dm[0]:+.1f} mm (elements' F), "
                   f"{dm[1]:+.1f} mm (averaged F); standard error of the difference {se[0]:.1f} / {se[1]:.1f} mm")
+        if len(labels) >= 3:
+            print_step_fit({label: stats[label] for label in labels})
     labels = list(ensembles)
     if len(labels) > 1:
         print("\ntau/p of each smaller step against the next larger one:")
@@ -415,6 +417,24 @@ def print_scatter(results, done, ensembles, groups):
         print(f"- {lb} against {la}: the largest difference of a run's from the unperturbed run {la} "
               f"{diff:+.4f} (at {100 * at:.1f} %); the ensembles' mean tau/p within "
               f"{np.abs(mean_b - mean_a).max():.4f} at every row")
+
+
+def print_step_fit(stats):
+    """The ensembles' mean widths against the macro step, w = w0 + k dt, fitted by least squares
+    weighted with their standard errors (@p stats: {"at STEP us": widths [runs, (elements' F,
+    averaged F)] in mm}): w0, the width extrapolated to dt = 0, k, and chi^2 against its degrees of
+    freedom (much more than them: the width is not linear in dt over these steps)."""
+    dt = np.array([float(label.split()[1]) for label in stats])
+    for col, name in enumerate(("elements' F", "averaged F")):
+        mean = np.array([w[:, col].mean() for w in stats.values()])
+        se = np.array([w[:, col].std(ddof=1) / np.sqrt(len(w)) for w in stats.values()])
+        X = np.column_stack([np.ones_like(dt), dt]) / se[:, None]
+        cov = np.linalg.inv(X.T @ X)
+        (w0, k) = cov @ X.T @ (mean / se)
+        chi2 = float(np.sum(((mean - w0 - k * dt) / se) ** 2))
+        print(f"- {name}: fit of the means against the step, w0 = {w0:.1f} +- {np.sqrt(cov[0, 0]):.1f} mm "
+              f"at dt = 0, k = {k:+.1f} +- {np.sqrt(cov[1, 1]):.1f} mm/us; chi^2 {chi2:.1f} on {len(dt) - 2} "
+              "degree(s) of freedom")
 
 
 def print_width_history(results, done, groups, path):

@@ -33,6 +33,7 @@ last row.
 Usage: problem3.py RESULTS   (Debian's python3 with numpy, h5py, matplotlib)
 """
 import csv
+import itertools
 import os
 import re
 import sys
@@ -360,9 +361,10 @@ def ensemble_runs(done):
 def print_scatter(results, done, ensembles, groups):
     """The band's width at one macro step and rate: each of @p ensembles (ensemble_runs) against its
     unperturbed run; the end widths' mean and scatter of every one of @p groups (the ensembles and
-    the step series), and each smaller step's mean against the next larger one's: the means'
-    difference, and the largest difference of a run's tau/p from the larger step's unperturbed run
-    and of the two ensembles' mean tau/p."""
+    the step series), each smaller step's mean against the next larger one's (and, with three or
+    more steps, the smallest's against the largest's; the fit against the step and the permutation
+    test): the means' difference, and the largest difference of a run's tau/p from the larger step's
+    unperturbed run and of the two ensembles' mean tau/p."""
     if not ensembles:
         return
     print("\n## the width at one step: a run and its runs with the top's pressure 1-4 ppm higher")
@@ -397,7 +399,9 @@ def print_scatter(results, done, ensembles, groups):
                   f"averaged F {w[:, 1].min():.1f}-{w[:, 1].max():.1f} mm, span {np.ptp(w[:, 1]):.1f}, "
                   f"mean {w[:, 1].mean():.1f}, standard deviation {w[:, 1].std(ddof=1):.1f}")
         labels = list(ensembles)
-        for la, lb in zip(labels, labels[1:]):
+        # each step against the next larger one, and the smallest against the largest
+        pairs = list(zip(labels, labels[1:])) + ([(labels[0], labels[-1])] if len(labels) >= 3 else [])
+        for la, lb in pairs:
             a, b = stats[la], stats[lb]
             se = np.sqrt(a.var(axis=0, ddof=1) / len(a) + b.var(axis=0, ddof=1) / len(b))
             dm = b.mean(axis=0) - a.mean(axis=0)
@@ -405,6 +409,7 @@ def print_scatter(results, done, ensembles, groups):
                   f"{dm[1]:+.1f} mm (averaged F); standard error of the difference {se[0]:.1f} / {se[1]:.1f} mm")
         if len(labels) >= 3:
             print_step_fit({label: stats[label] for label in labels})
+            print_step_permutation({label: stats[label] for label in labels})
     labels = list(ensembles)
     if len(labels) > 1:
         print("\ntau/p of each smaller step against the next larger one:")
@@ -435,6 +440,42 @@ def print_step_fit(stats):
         print(f"- {name}: fit of the means against the step, w0 = {w0:.1f} +- {np.sqrt(cov[0, 0]):.1f} mm "
               f"at dt = 0, k = {k:+.1f} +- {np.sqrt(cov[1, 1]):.1f} mm/us; chi^2 {chi2:.1f} on {len(dt) - 2} "
               "degree(s) of freedom")
+
+
+def between_steps(groups):
+    """The between-group sum of squares of @p groups (arrays of widths), the one-way layout's
+    statistic for a fixed pooled set (the F ratio grows with it)."""
+    grand = np.concatenate(groups).mean()
+    return sum(len(g) * (g.mean() - grand) ** 2 for g in groups)
+
+
+def print_step_permutation(stats):
+    """Does the step matter at all? The exact permutation test of the one-way layout: every split
+    of the pooled runs into groups of the ensembles' sizes, and the fraction whose between-step sum
+    of squares reaches the measured one (the p value: how often steps that did not matter would
+    look as different by chance). Added in session 43 after three of the four 0.2 us runs were
+    seen, beside the fit (print_step_fit), which assumes the width moves monotonically."""
+    sizes = [len(w) for w in stats.values()]
+    for col, name in enumerate(("elements' F", "averaged F")):
+        pooled = np.concatenate([w[:, col] for w in stats.values()])
+        measured = between_steps([w[:, col] for w in stats.values()])
+        reached = total = 0
+        for split in splits(list(range(len(pooled))), sizes):
+            total += 1
+            reached += between_steps([pooled[list(g)] for g in split]) >= measured * (1 - 1e-12)
+        print(f"- {name}: is the step's effect more than chance? exact permutation test over the "
+              f"{len(sizes)} steps: p = {reached / total:.3f} ({reached} of {total} splits as far apart)")
+
+
+def splits(items, sizes):
+    """Every split of @p items into groups of @p sizes, in order (the groups as tuples)."""
+    if len(sizes) == 1:
+        yield (tuple(items),)
+        return
+    for first in itertools.combinations(items, sizes[0]):
+        rest = [i for i in items if i not in first]
+        for tail in splits(rest, sizes[1:]):
+            yield (first, *tail)
 
 
 def print_width_history(results, done, groups, path):

@@ -429,13 +429,13 @@ problem3_perturbed() {
 # ... and the same ensemble at a tenth of the default step (0.2 us = 2 DEM steps, servo checks of 2;
 # session 43): after 2 -> 0.5 us widened the band by 4.6 +- 2.1 mm, does the mean width settle? The
 # unperturbed run first, then k = 1..3
-fifth_step="$(time_step_edit 2e-7); $(check_interval_edit 2)"
+tenth_step="$(time_step_edit 2e-7); $(check_interval_edit 2)"
 problem3_fine_step() {
   local own k
   own=$(own_12x10)
-  band_case problem3_R0.01_le2_12x10_box_own_dt0.2us "$here/problem3.prm" "$own; $fifth_step"
+  band_case problem3_R0.01_le2_12x10_box_own_dt0.2us "$here/problem3.prm" "$own; $tenth_step"
   for k in 1 2 3; do
-    band_case "problem3_R0.01_le2_12x10_box_own_dt0.2us_p$k" "$here/problem3.prm" "$own; $fifth_step; $(top_pressure_edit $k)"
+    band_case "problem3_R0.01_le2_12x10_box_own_dt0.2us_p$k" "$here/problem3.prm" "$own; $tenth_step; $(top_pressure_edit $k)"
   done
 }
 # problem3_edit CELLS_X CELLS_Y RADIUS [E]: problem3.prm's substitutions

@@ -500,9 +500,13 @@ def print_width_history(results, done, groups, path):
         h = np.array([history[k] for k in group])
         print(f"| span, {label} | " + " | ".join(f"{v:.1f}" for v in np.ptp(h, axis=0)) + " |")
     plt.figure(figsize=(6, 4))
+    # one colour per step ensemble (its runs dashed), the other single runs in the colours after them
+    colour = {k: f"C{i}" for i, (base, perturbed) in enumerate(ENSEMBLES.values()) for k in (base, *perturbed)}
+    singles = [k for k in cases if k not in colour]
+    colour.update({k: f"C{len(ENSEMBLES) + i}" for i, k in enumerate(singles)})
     for k in cases:
-        plt.plot(strains, history[k],
-                 "--" if k in PERTURBED else "-o", ms=3, label=k.replace("R = 10 mm, local elastic 2 MPa, 12x10, ", ""))
+        plt.plot(strains, history[k], "--" if k in PERTURBED else "-o", color=colour[k], ms=3,
+                 label=k.replace("R = 10 mm, local elastic 2 MPa, 12x10, ", ""))
     plt.xlabel(f"shear strain at the end of the {BAND_ROWS}-row window (%)")
     plt.ylabel("row-mean profile width, elements' F (mm)")
     plt.legend(fontsize=5)

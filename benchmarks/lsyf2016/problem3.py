@@ -385,6 +385,9 @@ def print_scatter(results, done, ensembles, groups):
             wall = float(open(os.path.join(results, CASES[k], "wall_s")).read())
             print(f"| {k} | {diff:+.4f} ({100 * at:.1f} %) | {100 * ds:.1f} % "
                   f"| {1e3 * w:.1f} / {1e3 * w_seen:.1f} | {1e3 * y:.1f} / {1e3 * y_seen:.1f} | {wall:.0f} |")
+    labels = list(ensembles)
+    # each step against the next larger one, and the smallest against the largest
+    pairs = list(zip(labels, labels[1:])) + ([(labels[0], labels[-1])] if len(labels) >= 3 else [])
     # the last BAND_ROWS rows (the measure of every table) and the last 2 BAND_ROWS, from about the
     # peak of tau/p (4-5 %): a longer window averages the band's wandering along the run
     for rows in (BAND_ROWS, 2 * BAND_ROWS):
@@ -398,9 +401,6 @@ def print_scatter(results, done, ensembles, groups):
                   f"{np.ptp(w[:, 0]):.1f}, mean {w[:, 0].mean():.1f}, standard deviation {w[:, 0].std(ddof=1):.1f}; "
                   f"averaged F {w[:, 1].min():.1f}-{w[:, 1].max():.1f} mm, span {np.ptp(w[:, 1]):.1f}, "
                   f"mean {w[:, 1].mean():.1f}, standard deviation {w[:, 1].std(ddof=1):.1f}")
-        labels = list(ensembles)
-        # each step against the next larger one, and the smallest against the largest
-        pairs = list(zip(labels, labels[1:])) + ([(labels[0], labels[-1])] if len(labels) >= 3 else [])
         for la, lb in pairs:
             a, b = stats[la], stats[lb]
             se = np.sqrt(a.var(axis=0, ddof=1) / len(a) + b.var(axis=0, ddof=1) / len(b))
@@ -410,15 +410,14 @@ def print_scatter(results, done, ensembles, groups):
         if len(labels) >= 3:
             print_step_fit({label: stats[label] for label in labels})
             print_step_permutation({label: stats[label] for label in labels})
-    labels = list(ensembles)
     if len(labels) > 1:
         print("\ntau/p of each smaller step against the next larger one:")
     for la, lb in zip(labels, labels[1:]):
         base = done[ensembles[la][0]]
         diff, at = max((largest_difference(done[k], base) for k in ensembles[lb]), key=lambda r: abs(r[0]))
         curves = {label: [curve(done[k])[1] for k in ensembles[label]] for label in (la, lb)}
-        rows = min(len(c) for group in curves.values() for c in group)
-        mean_a, mean_b = (np.mean([c[:rows] for c in curves[label]], axis=0) for label in (la, lb))
+        n = min(len(c) for group in curves.values() for c in group)
+        mean_a, mean_b = (np.mean([c[:n] for c in curves[label]], axis=0) for label in (la, lb))
         print(f"- {lb} against {la}: the largest difference of a run's from the unperturbed run {la} "
               f"{diff:+.4f} (at {100 * at:.1f} %); the ensembles' mean tau/p within "
               f"{np.abs(mean_b - mean_a).max():.4f} at every row")
@@ -428,7 +427,7 @@ def print_step_fit(stats):
     """The ensembles' mean widths against the macro step, w = w0 + k dt, fitted by least squares
     weighted with their standard errors (@p stats: {"at STEP us": widths [runs, (elements' F,
     averaged F)] in mm}): w0, the width extrapolated to dt = 0, k, and chi^2 against its degrees of
-    freedom (much more than them: the width is not linear in dt over these steps)."""
+    freedom (a chi^2 much above them says the width is not linear in dt over these steps)."""
     dt = np.array([float(label.split()[1]) for label in stats])
     for col, name in enumerate(("elements' F", "averaged F")):
         mean = np.array([w[:, col].mean() for w in stats.values()])

@@ -57,6 +57,9 @@
 #   problem3_fine_step  the same ensemble (unperturbed, +1-3 ppm) at 0.2 us, 2 DEM steps per macro
 #              step with servo checks of 2: does the band's mean width settle in the step? (session
 #              43). About 33 min per run alone, 130 min in all
+#   problem3_against_r  the 12x10 own-volume ensemble (unperturbed, +1-3 ppm) at the default step
+#              with R = 15 and 20 mm beside the R = 10 mm one: the band's width against R as the
+#              means of ensembles (session 44). About 16 min per run alone, 130 min in all
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
 #   cv_shear   problem 3's packings (lsyf_300, lsyf_300_weak) sheared at constant volume, fe2dem-rve
@@ -76,7 +79,7 @@
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
 # result exists and whose parameter file is unchanged is not run again.
 #
-#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem3_fixed_r|problem3_own_volume|problem3_converged|problem3_perturbed|problem3_fine_step|problem4|problem4_rates|macro_step|cv_shear|tables|all [--full]
+#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem3_fixed_r|problem3_own_volume|problem3_converged|problem3_perturbed|problem3_fine_step|problem3_against_r|problem4|problem4_rates|macro_step|cv_shear|tables|all [--full]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -438,6 +441,22 @@ problem3_fine_step() {
     band_case "problem3_R0.01_le2_12x10_box_own_dt0.2us_p$k" "$here/problem3.prm" "$own; $tenth_step; $(top_pressure_edit $k)"
   done
 }
+# ... and the default-step ensemble (unperturbed, +1-3 ppm) at R = 15 and 20 mm (session 44): the width
+# against R from ensemble means, since one run's width is one draw (sd 1.4-2.3 mm at R = 10 mm). The
+# two radii alternate so that, stopped early, both ensembles have the same number of runs
+problem3_against_r() {
+  local k r edit
+  for k in 0 1 2 3; do
+    for r in 0.015 0.02; do
+      edit="$(problem3_edit 12 10 $r 2e6); $seed_box; $own_volume"
+      if [[ $k -eq 0 ]]; then
+        band_case "problem3_R${r}_le2_12x10_box_own" "$here/problem3.prm" "$edit"
+      else
+        band_case "problem3_R${r}_le2_12x10_box_own_p$k" "$here/problem3.prm" "$edit; $(top_pressure_edit $k)"
+      fi
+    done
+  done
+}
 # problem3_edit CELLS_X CELLS_Y RADIUS [E]: problem3.prm's substitutions
 problem3_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; ${4:+$(local_elastic "$4")}"; }
 # submit_full NAME PRM [sed expression]: the case at the paper's size (lsyf_4096) in
@@ -496,6 +515,7 @@ problem3() {
   problem3_converged
   problem3_perturbed
   problem3_fine_step
+  problem3_against_r
   problem3_table
 }
 problem3_table() {
@@ -585,6 +605,7 @@ case "$what" in
   problem3_converged) problem3_converged; problem3_table ;;
   problem3_perturbed) problem3_perturbed; problem3_table ;;
   problem3_fine_step) problem3_fine_step; problem3_table ;;
+  problem3_against_r) problem3_against_r; problem3_table ;;
   problem4) if [[ -n $full ]]; then problem4_full; else problem4; fi ;;
   problem4_rates) problem4_rates ;;
   macro_step) macro_step ;;

@@ -84,7 +84,10 @@ CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "p
          "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 0.2 us step":
              "problem3_R0.01_le2_12x10_box_own_dt0.2us",
          **{f"R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 0.2 us step, top pressure +{k} ppm":
-            f"problem3_R0.01_le2_12x10_box_own_dt0.2us_p{k}" for k in range(1, 4)}}
+            f"problem3_R0.01_le2_12x10_box_own_dt0.2us_p{k}" for k in range(1, 4)},
+         **{f"R = {r} mm, local elastic 2 MPa, 12x10, seed box, own volume{f', top pressure +{k} ppm' if k else ''}":
+            f"problem3_R{radius}_le2_12x10_box_own{f'_p{k}' if k else ''}"
+            for r, radius in ((15, "0.015"), (20, "0.02")) for k in range(4)}}
 # the band width against R and the mesh: (R in mm, element height in mm, case)
 # The macro step is fe2dem's default (5 us on 12x5, 2 us on 12x10 and 12x15, 1 us on 12x20) but where the
 # case names it (run.sh problem3_step_cases, problem3_band_cases, problem3_scaled_cases; README,
@@ -135,6 +138,12 @@ FINE_STEP = "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 0.2 us
 ENSEMBLES = {step: (base, tuple(k for k in CASES if k.startswith(base + ", top pressure")))
              for step, base in (("2 us", CONVERGED[0]), ("0.5 us", CONVERGED[2]), ("0.2 us", FINE_STEP))}
 PERTURBED = sum((e[1] for e in ENSEMBLES.values()), ())
+# ... and the 2 us ensemble at R = 15 and 20 mm beside R = 10 mm's (run.sh problem3_against_r, session 44):
+# the band's width against R from ensemble means, {R in mm: (unperturbed, perturbed)}
+R_ENSEMBLES = {r: (base, tuple(k for k in CASES if k.startswith(base + ", top pressure")))
+               for r, base in ((10.0, CONVERGED[0]),
+                               *((r, f"R = {r:g} mm, local elastic 2 MPa, 12x10, seed box, own volume")
+                                 for r in (15.0, 20.0)))}
 BACKWARDS = -0.01  # a shear increment below this over the last BAND_ROWS rows: an IP shearing backwards
 # the band's directions in simple shear: along the shear, within 20 degrees of x (the local runs' band
 # is at 4 degrees); among all directions the finder can return a hot spot around the weak RVE
@@ -424,21 +433,31 @@ def print_scatter(results, done, ensembles, groups):
 
 
 def print_step_fit(stats):
-    """The ensembles' mean widths against the macro step, w = w0 + k dt, fitted by least squares
-    weighted with their standard errors (@p stats: {"at STEP us": widths [runs, (elements' F,
-    averaged F)] in mm}): w0, the width extrapolated to dt = 0, k, and chi^2 against its degrees of
-    freedom (a chi^2 much above them says the width is not linear in dt over these steps)."""
+    """The ensembles' mean widths against the macro step, w = w0 + k dt (@p stats: {"at STEP us":
+    widths [runs, (elements' F, averaged F)] in mm}; linear_fit): w0 is the width extrapolated to
+    dt = 0."""
     dt = np.array([float(label.split()[1]) for label in stats])
-    for col, name in enumerate(("elements' F", "averaged F")):
-        mean = np.array([w[:, col].mean() for w in stats.values()])
-        se = np.array([w[:, col].std(ddof=1) / np.sqrt(len(w)) for w in stats.values()])
-        X = np.column_stack([np.ones_like(dt), dt]) / se[:, None]
-        cov = np.linalg.inv(X.T @ X)
-        (w0, k) = cov @ X.T @ (mean / se)
-        chi2 = float(np.sum(((mean - w0 - k * dt) / se) ** 2))
-        print(f"- {name}: fit of the means against the step, w0 = {w0:.1f} +- {np.sqrt(cov[0, 0]):.1f} mm "
-              f"at dt = 0, k = {k:+.1f} +- {np.sqrt(cov[1, 1]):.1f} mm/us; chi^2 {chi2:.1f} on {len(dt) - 2} "
+    for name, (w0, k, chi2) in linear_fit(dt, stats.values()):
+        print(f"- {name}: fit of the means against the step, w0 = {w0[0]:.1f} +- {w0[1]:.1f} mm "
+              f"at dt = 0, k = {k[0]:+.1f} +- {k[1]:.1f} mm/us; chi^2 {chi2:.1f} on {len(dt) - 2} "
               "degree(s) of freedom")
+
+
+def linear_fit(x, widths):
+    """[(field, ((a, its standard error), (b, its standard error), chi^2))] of the ensembles' mean
+    widths against @p x, w = a + b x, fitted by least squares weighted with the means' standard
+    errors (@p widths: per ensemble an array [runs, (elements' F, averaged F)] in mm); chi^2 against
+    its len(x) - 2 degrees of freedom says whether the means are linear in x."""
+    fits = []
+    for col, name in enumerate(("elements' F", "averaged F")):
+        mean = np.array([w[:, col].mean() for w in widths])
+        se = np.array([w[:, col].std(ddof=1) / np.sqrt(len(w)) for w in widths])
+        X = np.column_stack([np.ones_like(x), x]) / se[:, None]
+        cov = np.linalg.inv(X.T @ X)
+        a, b = cov @ X.T @ (mean / se)
+        chi2 = float(np.sum(((mean - a - b * x) / se) ** 2))
+        fits.append((name, ((a, np.sqrt(cov[0, 0])), (b, np.sqrt(cov[1, 1])), chi2)))
+    return fits
 
 
 def between_steps(groups):
@@ -448,11 +467,11 @@ def between_steps(groups):
     return sum(len(g) * (g.mean() - grand) ** 2 for g in groups)
 
 
-def print_step_permutation(stats):
-    """Does the step matter at all? The exact permutation test of the one-way layout: every split
-    of the pooled runs into groups of the ensembles' sizes, and the fraction whose between-step sum
-    of squares reaches the measured one (the p value: how often steps that did not matter would
-    look as different by chance). Added in session 43 after three of the four 0.2 us runs were
+def print_step_permutation(stats, what="the step", groups="steps"):
+    """Does @p what (the step) matter at all? The exact permutation test of the one-way layout: every
+    split of the pooled runs into groups of the ensembles' sizes, and the fraction whose between-group
+    sum of squares reaches the measured one (the p value: how often @p groups that did not matter
+    would look as different by chance). Added in session 43 after three of the four 0.2 us runs were
     seen, beside the fit (print_step_fit), which assumes the width moves monotonically."""
     sizes = [len(w) for w in stats.values()]
     for col, name in enumerate(("elements' F", "averaged F")):
@@ -462,8 +481,8 @@ def print_step_permutation(stats):
         for split in splits(list(range(len(pooled))), sizes):
             total += 1
             reached += between_steps([pooled[list(g)] for g in split]) >= measured * (1 - 1e-12)
-        print(f"- {name}: is the step's effect more than chance? exact permutation test over the "
-              f"{len(sizes)} steps: p = {reached / total:.3f} ({reached} of {total} splits as far apart)")
+        print(f"- {name}: is {what}'s effect more than chance? exact permutation test over the "
+              f"{len(sizes)} {groups}: p = {reached / total:.3f} ({reached} of {total} splits as far apart)")
 
 
 def splits(items, sizes):
@@ -511,6 +530,129 @@ def print_width_history(results, done, groups, path):
     plt.legend(fontsize=5)
     plt.tight_layout()
     plt.savefig(path, dpi=120)
+
+
+def against_r_runs(done):
+    """{R in mm: the finished runs of R_ENSEMBLES' ensemble at R}, for the radii whose unperturbed
+    run and at least one perturbed run are finished."""
+    runs = {r: [k for k in (base, *perturbed) if k in done] for r, (base, perturbed) in R_ENSEMBLES.items()}
+    return {r: members for r, members in runs.items() if R_ENSEMBLES[r][0] in done and len(members) >= 2}
+
+
+def inside_outside(d, inside):
+    """{quantity: (mean inside, mean outside)} at the last row of run @p d over the IPs @p inside
+    (a boolean mask) and the rest: porosity, coordination, the sliding fraction and the inner
+    particles' mean rotation (None for runs made before fe2dem recorded it)."""
+    values = {"porosity": 1.0 - d["packing_fraction"][-1], "coordination": d["coordination"][-1],
+              "sliding fraction": d["sliding_contacts"][-1] / np.maximum(d["contacts"][-1], 1)}
+    if d["mean_rotation"] is not None:
+        values["mean rotation (rad)"] = d["mean_rotation"][-1]
+    return {q: (v[inside].mean(), v[~inside].mean()) for q, v in values.items()}
+
+
+def print_against_r(results, done, path):
+    """The band's width against R from the ensembles of R_ENSEMBLES (against_r_runs): each run's
+    tau/p at 8 %, weak RVEs' pressure and end widths; per R the mean width +- its standard error over
+    the last BAND_ROWS and 2 BAND_ROWS rows, width / R, each R against the next smaller, the fit w = a
+    + b R and the permutation test; the band's inside against its outside as ensemble means (inside:
+    the IPs above half the largest increment, as the band table); @p path: the widths against R and
+    the ensembles' mean profiles across y."""
+    ensembles = against_r_runs(done)
+    if len(ensembles) < 2:
+        return
+    print("\n## the width against R: the 2 us ensembles (12x10, seed box, own volume, C_e of E = 2 MPa)")
+    print("| R (mm) | run | tau/p at 8 % | weak RVEs' p at the end (kPa) | width, last 4 rows (mm): elements' / "
+          "averaged F | last 8 rows | peak at y (mm) |")
+    print("|---|---|---|---|---|---|---|")
+    for r, members in ensembles.items():
+        for k in members:
+            d = done[k]
+            _, tp = curve(d)
+            p = weak_stress(d)[1][-1]
+            (w4, y), (w4_seen, _) = (profile(results, k, f) for f in ("F", "F_nonlocal"))
+            w8, w8_seen = (profile(results, k, f, -1, 2 * BAND_ROWS)[0] for f in ("F", "F_nonlocal"))
+            run = k[len(R_ENSEMBLES[r][0]) + 2:] or "unperturbed"
+            print(f"| {r:g} | {run} | {tp[-1]:.3f} | {', '.join(f'{v / 1e3:.0f}' for v in p)} "
+                  f"| {1e3 * w4:.1f} / {1e3 * w4_seen:.1f} | {1e3 * w8:.1f} / {1e3 * w8_seen:.1f} | {1e3 * y:.1f} |")
+    radii = np.array(list(ensembles))
+    for rows in (BAND_ROWS, 2 * BAND_ROWS):
+        stats = {r: 1e3 * np.array([[profile(results, k, f, -1, rows)[0] for f in ("F", "F_nonlocal")]
+                                    for k in members]) for r, members in ensembles.items()}
+        print(f"\nmean end width over the last {rows} rows ({100 * SHEAR * rows / LOAD_STEPS:g} % of shear) "
+              "+- its standard error, row-mean profile above half its peak:")
+        print("| R (mm) | runs | elements' F (mm) | width / R | averaged F (mm) | width / R |")
+        print("|---|---|---|---|---|---|")
+        for r, w in stats.items():
+            m, se = w.mean(axis=0), w.std(axis=0, ddof=1) / np.sqrt(len(w))
+            print(f"| {r:g} | {len(w)} | {m[0]:.1f} +- {se[0]:.1f} | {m[0] / r:.2f} | {m[1]:.1f} +- {se[1]:.1f} "
+                  f"| {m[1] / r:.2f} |")
+        for ra, rb in zip(radii, radii[1:]):
+            a, b = stats[ra], stats[rb]
+            se = np.sqrt(a.var(axis=0, ddof=1) / len(a) + b.var(axis=0, ddof=1) / len(b))
+            dm = b.mean(axis=0) - a.mean(axis=0)
+            print(f"- R = {rb:g} minus R = {ra:g} mm: {dm[0]:+.1f} +- {se[0]:.1f} mm (elements' F), "
+                  f"{dm[1]:+.1f} +- {se[1]:.1f} mm (averaged F)")
+        if len(radii) >= 3:
+            for name, (a, b, chi2) in linear_fit(radii, stats.values()):
+                print(f"- {name}: fit of the means against R, w = {a[0]:.1f} +- {a[1]:.1f} mm + "
+                      f"({b[0]:.2f} +- {b[1]:.2f}) R; chi^2 {chi2:.1f} on {len(radii) - 2} degree(s) of freedom")
+        print_step_permutation(stats, "R", "radii")
+        if rows == 2 * BAND_ROWS:
+            widths = stats
+    print(f"\ninside against outside the band at the end (increment of the last {BAND_ROWS} rows; ensemble means "
+          "+- standard error of the per-run means):")
+    print("| R (mm) | runs | IPs inside | porosity in / out | coordination in / out | sliding fraction in / out "
+          "| mean rotation (rad) in / out |")
+    print("|---|---|---|---|---|---|---|")
+    for r, members in ensembles.items():
+        per_run, n_in = [], []
+        for k in members:
+            _, gamma, _, _, _ = inplane_band(os.path.join(results, CASES[k], "out", "history.h5"), BAND_ROWS)
+            inside = gamma > 0.5 * gamma.max()
+            n_in.append(int(inside.sum()))
+            per_run.append(inside_outside(done[k], inside))
+        cells = []
+        for q in ("porosity", "coordination", "sliding fraction", "mean rotation (rad)"):
+            if not all(q in v for v in per_run):
+                cells.append("-")
+                continue
+            v = np.array([v[q] for v in per_run])  # [runs, (in, out)]
+            m, se = v.mean(axis=0), v.std(axis=0, ddof=1) / np.sqrt(len(v))
+            cells.append(f"{m[0]:.4f} +- {se[0]:.4f} / {m[1]:.4f} +- {se[1]:.4f}")
+        print(f"| {r:g} | {len(members)} | {min(n_in)}-{max(n_in)} of {len(gamma)} | " + " | ".join(cells) + " |")
+    plot_against_r(results, ensembles, widths, path)
+
+
+def plot_against_r(results, ensembles, widths, path):
+    """Two panels into @p path: each run's end width over the last 2 BAND_ROWS rows and the ensemble
+    means +- standard error against R (@p widths: {R: [runs, (elements' F, averaged F)]}, mm), the
+    line width = R and 2 R beside them; and each ensemble's mean row profile of the elements' F."""
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(9, 3.8))
+    for col, (name, marker) in enumerate((("elements' F", "o"), ("averaged F", "s"))):
+        for i, (r, w) in enumerate(widths.items()):
+            shift = 0.3 * (col - 0.5)
+            ax.plot(np.full(len(w), r + shift), w[:, col], marker, color=f"C{col}", ms=3, alpha=0.5)
+            ax.errorbar(r + shift, w[:, col].mean(), w[:, col].std(ddof=1) / np.sqrt(len(w)), fmt=marker,
+                        color=f"C{col}", ms=7, capsize=3, label=f"{name}, mean +- s.e." if i == 0 else None)
+    r = np.array([0, max(widths) + 2])
+    ax.plot(r, r, "k:", lw=0.8, label="width = R")
+    ax.plot(r, 2 * r, "k--", lw=0.8, label="width = 2 R")
+    ax.set_xlabel("R (mm)")
+    ax.set_ylabel(f"band width, last {100 * SHEAR * 2 * BAND_ROWS / LOAD_STEPS:g} % of shear (mm)")
+    ax.legend(fontsize=6)
+    for r, members in ensembles.items():
+        profiles = []
+        for k in members:
+            x, gamma, _, _, _ = inplane_band(os.path.join(results, CASES[k], "out", "history.h5"), 2 * BAND_ROWS,
+                                             ALONG_X, "F")
+            y, g = row_means(x, gamma)
+            profiles.append(g)
+        bx.plot(np.mean(profiles, axis=0), 1e3 * y, "o-", ms=3, label=f"R = {r:g} mm ({len(members)} runs)")
+    bx.set_xlabel(f"ensemble mean of the row-mean shear increment, last {100 * SHEAR * 2 * BAND_ROWS / LOAD_STEPS:g} %")
+    bx.set_ylabel("y (mm)")
+    bx.legend(fontsize=6)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
 
 
 def print_softening(results, done):
@@ -594,6 +736,7 @@ def main():
         groups["the step series at 4 /s (2, 1, 0.5 us, 1 us with checks of 5)"] = [k for k in CONVERGED[:-1] if k in done]
     print_scatter(results, done, ensembles, groups)
     print_width_history(results, done, groups, os.path.join(results, "problem3_width_history.png"))
+    print_against_r(results, done, os.path.join(results, "problem3_against_r.png"))
     with open(os.path.join(results, "problem3.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["case", "x", "y", "in_band", "porosity", "coordination", "sliding_fraction", "mean_rotation"])

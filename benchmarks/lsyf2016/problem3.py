@@ -648,7 +648,7 @@ def plot_against_r(results, ensembles, widths, path):
             y, g = row_means(x, gamma)
             profiles.append(g)
         bx.plot(np.mean(profiles, axis=0), 1e3 * y, "o-", ms=3, label=f"R = {r:g} mm ({len(members)} runs)")
-    bx.set_xlabel(f"ensemble mean of the row-mean shear increment, last {100 * SHEAR * 2 * BAND_ROWS / LOAD_STEPS:g} %")
+    bx.set_xlabel(f"row-mean shear increment, last {100 * SHEAR * 2 * BAND_ROWS / LOAD_STEPS:g} % (ensemble mean)")
     bx.set_ylabel("y (mm)")
     bx.legend(fontsize=6)
     fig.tight_layout()

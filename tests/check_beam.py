@@ -44,6 +44,11 @@ free = deflection(last("no_control"))
 print(f"no_control (20 x 1, no hourglass control): deflection {free:.4f} = {free / ref:.1f} x the reference")
 if not free > 2 * ref:
     failures.append(f"no_control: deflection {free} does not show the zero-energy modes (within 2x of {ref})")
+r = last("one_layer")
+share = float(r["hourglass_work"]) / float(r["internal_work"])
+print(f"one_layer (10 x 1, one point, stiffness control): hourglass work {share:.2%} of the internal work")
+if not share > 0.1:
+    failures.append(f"one_layer: hourglass work {share:.2%} of the internal work, not above 10 %")
 for f in failures:
     print("FAIL", f)
 print(f"{work}: {len(failures)} failures")

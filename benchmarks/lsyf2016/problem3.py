@@ -87,7 +87,13 @@ CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "p
             f"problem3_R0.01_le2_12x10_box_own_dt0.2us_p{k}" for k in range(1, 4)},
          **{f"R = {r} mm, local elastic 2 MPa, 12x10, seed box, own volume{f', top pressure +{k} ppm' if k else ''}":
             f"problem3_R{radius}_le2_12x10_box_own{f'_p{k}' if k else ''}"
-            for r, radius in ((15, "0.015"), (20, "0.02")) for k in range(4)}}
+            for r, radius in ((15, "0.015"), (20, "0.02")) for k in range(4)},
+         "R = 20 mm, local elastic 2 MPa, 12x10, seed box": "problem3_R0.02_le2_12x10_box",
+         **{f"R = {r} mm, local elastic 2 MPa, 12x10, seed box, top pressure +{k} ppm":
+            f"problem3_R{radius}_le2_12x10_box_p{k}"
+            for r, radius in ((10, "0.01"), (15, "0.015"), (20, "0.02")) for k in range(1, 3)},
+         **{f"R = {r} mm, local elastic 2 MPa, 12x10, seed box, own volume, 1 us step":
+            f"problem3_R{radius}_le2_12x10_box_own_dt1us" for r, radius in ((15, "0.015"), (20, "0.02"))}}
 # the band width against R and the mesh: (R in mm, element height in mm, case)
 # The macro step is fe2dem's default (5 us on 12x5, 2 us on 12x10 and 12x15, 1 us on 12x20) but where the
 # case names it (run.sh problem3_step_cases, problem3_band_cases, problem3_scaled_cases; README,
@@ -138,12 +144,14 @@ FINE_STEP = "R = 10 mm, local elastic 2 MPa, 12x10, seed box, own volume, 0.2 us
 ENSEMBLES = {step: (base, tuple(k for k in CASES if k.startswith(base + ", top pressure")))
              for step, base in (("2 us", CONVERGED[0]), ("0.5 us", CONVERGED[2]), ("0.2 us", FINE_STEP))}
 PERTURBED = sum((e[1] for e in ENSEMBLES.values()), ())
-# ... and the 2 us ensemble at R = 15 and 20 mm beside R = 10 mm's (run.sh problem3_against_r, session 44):
-# the band's width against R from ensemble means, {R in mm: (unperturbed, perturbed)}
-R_ENSEMBLES = {r: (base, tuple(k for k in CASES if k.startswith(base + ", top pressure")))
-               for r, base in ((10.0, CONVERGED[0]),
-                               *((r, f"R = {r:g} mm, local elastic 2 MPa, 12x10, seed box, own volume")
-                                 for r in (15.0, 20.0)))}
+# ... and the 2 us ensemble at R = 15 and 20 mm beside R = 10 mm's, with each RVE's own volume (run.sh
+# problem3_against_r) and with the averaged one (problem3_against_r_averaged; session 44): the band's
+# width against R from ensemble means, {family: {R in mm: (unperturbed, perturbed)}}
+R_FAMILIES = {family: {r: (base, tuple(k for k in CASES if k.startswith(base + ", top pressure")))
+                       for r, base in ((r, f"R = {r:g} mm, local elastic 2 MPa, 12x10, seed box{suffix}")
+                                       for r in (10.0, 15.0, 20.0))}
+              for family, suffix in (("own volume", ", own volume"), ("averaged volume", ""))}
+APPLIED = 4.16e5  # Pa, the top's vertical stress (problem3.prm)
 BACKWARDS = -0.01  # a shear increment below this over the last BAND_ROWS rows: an IP shearing backwards
 # the band's directions in simple shear: along the shear, within 20 degrees of x (the local runs' band
 # is at 4 degrees); among all directions the finder can return a hot spot around the weak RVE
@@ -532,11 +540,39 @@ def print_width_history(results, done, groups, path):
     plt.savefig(path, dpi=120)
 
 
-def against_r_runs(done):
-    """{R in mm: the finished runs of R_ENSEMBLES' ensemble at R}, for the radii whose unperturbed
-    run and at least one perturbed run are finished."""
-    runs = {r: [k for k in (base, *perturbed) if k in done] for r, (base, perturbed) in R_ENSEMBLES.items()}
-    return {r: members for r, members in runs.items() if R_ENSEMBLES[r][0] in done and len(members) >= 2}
+def against_r_runs(done, family):
+    """{R in mm: the finished runs of @p family's ensemble at R} (a value of R_FAMILIES), for the radii
+    whose unperturbed run and at least one perturbed run are finished."""
+    runs = {r: [k for k in (base, *perturbed) if k in done] for r, (base, perturbed) in family.items()}
+    return {r: members for r, members in runs.items() if family[r][0] in done and len(members) >= 2}
+
+
+def equilibrium(results, k, d):
+    """(hourglass share, rows' vertical stress) of case @p k: the hourglass forces' work over the larger
+    of the internal and external work at the end (energy.csv; fe2dem warns above 0.1), and the largest
+    departure of a row of IPs' mean sigma_22 from the applied APPLIED over all rows of history.h5,
+    over APPLIED. The rows' sigma_22 must equal the top's stress in equilibrium (the sides are free in
+    y), so a large departure says the points' stresses do not carry the load: the hourglass forces
+    do."""
+    with open(os.path.join(results, CASES[k], "out", "energy.csv")) as f:
+        last = list(csv.DictReader(f))[-1]
+    work = max(abs(float(last["internal_work"])), abs(float(last["external_work"])))
+    share = abs(float(last["hourglass_work"])) / work
+    s22 = -d["sigma"].reshape(len(d["step"]), -1, 9)[:, :, 4]
+    rows = max(np.abs(row_means(d["ip_position"], v)[1] - APPLIED).max() for v in s22) / APPLIED
+    return share, rows
+
+
+def print_equilibrium(results, done):
+    """Every case's equilibrium (equilibrium()): the hourglass share and the rows' sigma_22."""
+    print("\n## equilibrium of the points' stresses: the hourglass work's share of the work at the end "
+          "(fe2dem warns above 0.1), and the largest departure of a row's mean sigma_22 from the applied "
+          f"{APPLIED / 1e3:.0f} kPa over the run")
+    print("| case | hourglass share | rows' sigma_22: largest departure / applied |")
+    print("|---|---|---|")
+    for k, d in done.items():
+        share, rows = equilibrium(results, k, d)
+        print(f"| {k} | {share:.3f}{' **(above 0.1)**' if share > 0.1 else ''} | {rows:.2f} |")
 
 
 def inside_outside(d, inside):
@@ -550,20 +586,21 @@ def inside_outside(d, inside):
     return {q: (v[inside].mean(), v[~inside].mean()) for q, v in values.items()}
 
 
-def print_against_r(results, done, path):
-    """The band's width against R from the ensembles of R_ENSEMBLES (against_r_runs): each run's
-    tau/p at 8 %, weak RVEs' pressure and end widths; per R the mean width +- its standard error over
+def print_against_r(results, done, name, family, path):
+    """The band's width against R from the ensembles of @p family (R_FAMILIES[@p name];
+    against_r_runs): each run's tau/p at 8 %, weak RVEs' pressure, hourglass share (equilibrium())
+    and end widths; per R the mean width +- its standard error over
     the last BAND_ROWS and 2 BAND_ROWS rows, width / R, each R against the next smaller, the fit w = a
     + b R and the permutation test; the band's inside against its outside as ensemble means (inside:
     the IPs above half the largest increment, as the band table); @p path: the widths against R and
     the ensembles' mean profiles across y."""
-    ensembles = against_r_runs(done)
+    ensembles = against_r_runs(done, family)
     if len(ensembles) < 2:
         return
-    print("\n## the width against R: the 2 us ensembles (12x10, seed box, own volume, C_e of E = 2 MPa)")
-    print("| R (mm) | run | tau/p at 8 % | weak RVEs' p at the end (kPa) | width, last 4 rows (mm): elements' / "
-          "averaged F | last 8 rows | peak at y (mm) |")
-    print("|---|---|---|---|---|---|---|")
+    print(f"\n## the width against R: the 2 us ensembles (12x10, seed box, {name}, C_e of E = 2 MPa)")
+    print("| R (mm) | run | tau/p at 8 % | weak RVEs' p at the end (kPa) | hourglass share | width, last 4 rows (mm): "
+          "elements' / averaged F | last 8 rows | peak at y (mm) |")
+    print("|---|---|---|---|---|---|---|---|")
     for r, members in ensembles.items():
         for k in members:
             d = done[k]
@@ -571,8 +608,9 @@ def print_against_r(results, done, path):
             p = weak_stress(d)[1][-1]
             (w4, y), (w4_seen, _) = (profile(results, k, f) for f in ("F", "F_nonlocal"))
             w8, w8_seen = (profile(results, k, f, -1, 2 * BAND_ROWS)[0] for f in ("F", "F_nonlocal"))
-            run = k[len(R_ENSEMBLES[r][0]) + 2:] or "unperturbed"
-            print(f"| {r:g} | {run} | {tp[-1]:.3f} | {', '.join(f'{v / 1e3:.0f}' for v in p)} "
+            run = k[len(family[r][0]) + 2:] or "unperturbed"
+            share = equilibrium(results, k, d)[0]
+            print(f"| {r:g} | {run} | {tp[-1]:.3f} | {', '.join(f'{v / 1e3:.0f}' for v in p)} | {share:.3f} "
                   f"| {1e3 * w4:.1f} / {1e3 * w4_seen:.1f} | {1e3 * w8:.1f} / {1e3 * w8_seen:.1f} | {1e3 * y:.1f} |")
     radii = np.array(list(ensembles))
     for rows in (BAND_ROWS, 2 * BAND_ROWS):
@@ -736,7 +774,10 @@ def main():
         groups["the step series at 4 /s (2, 1, 0.5 us, 1 us with checks of 5)"] = [k for k in CONVERGED[:-1] if k in done]
     print_scatter(results, done, ensembles, groups)
     print_width_history(results, done, groups, os.path.join(results, "problem3_width_history.png"))
-    print_against_r(results, done, os.path.join(results, "problem3_against_r.png"))
+    for name, family in R_FAMILIES.items():
+        png = "problem3_against_r.png" if name == "own volume" else f"problem3_against_r_{name.split()[0]}.png"
+        print_against_r(results, done, name, family, os.path.join(results, png))
+    print_equilibrium(results, done)
     with open(os.path.join(results, "problem3.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["case", "x", "y", "in_band", "porosity", "coordination", "sliding_fraction", "mean_rotation"])

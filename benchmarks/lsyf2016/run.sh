@@ -59,7 +59,12 @@
 #              43). About 33 min per run alone, 130 min in all
 #   problem3_against_r  the 12x10 own-volume ensemble (unperturbed, +1-3 ppm) at the default step
 #              with R = 15 and 20 mm beside the R = 10 mm one: the band's width against R as the
-#              means of ensembles (session 44). About 16 min per run alone, 130 min in all
+#              means of ensembles (session 44; those radii turned out hourglass-dominated with
+#              own volume, README). About 11 min per run alone, 90 min in all
+#   problem3_against_r_averaged  the same with 'Volume change' = averaged at R = 10, 15, 20 mm
+#              (unperturbed, +1, +2 ppm; session 44). About 11 min per run alone
+#   problem3_own_half_step  the own-volume runs at R = 20 and 15 mm on 12x10 at half the default
+#              step (1 us): is their hourglass-dominated state the step's? (session 44; 22 min each)
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
 #   cv_shear   problem 3's packings (lsyf_300, lsyf_300_weak) sheared at constant volume, fe2dem-rve
@@ -79,7 +84,7 @@
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
 # result exists and whose parameter file is unchanged is not run again.
 #
-#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem3_fixed_r|problem3_own_volume|problem3_converged|problem3_perturbed|problem3_fine_step|problem3_against_r|problem4|problem4_rates|macro_step|cv_shear|tables|all [--full]
+#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem3_fixed_r|problem3_own_volume|problem3_converged|problem3_perturbed|problem3_fine_step|problem3_against_r|problem3_against_r_averaged|problem3_own_half_step|problem4|problem4_rates|macro_step|cv_shear|tables|all [--full]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -457,6 +462,28 @@ problem3_against_r() {
     done
   done
 }
+# ... and with the averaged volume ([LSYF]'s rule, the default), after the own-volume runs at R = 15
+# and 20 mm on 12x10 were hourglass-dominated (the hourglass forces did more work than the
+# stresses; README, problem 3, session 44): R = 20 mm unperturbed, then +1 and +2 ppm at each R
+problem3_against_r_averaged() {
+  local k r edit
+  band_case problem3_R0.02_le2_12x10_box "$here/problem3.prm" "$(problem3_edit 12 10 0.02 2e6); $seed_box"
+  for k in 1 2; do
+    for r in 0.01 0.015 0.02; do
+      edit="$(problem3_edit 12 10 $r 2e6); $seed_box; $(top_pressure_edit $k)"
+      band_case "problem3_R${r}_le2_12x10_box_p$k" "$here/problem3.prm" "$edit"
+    done
+  done
+}
+# ... and the own-volume runs at R = 20 and 15 mm at half the default step: two load steps of the R =
+# 20 mm case at 1 us stayed at 1.6 % of hourglass work where 2 us had 91 % (session 44)
+problem3_own_half_step() {
+  local r
+  for r in 0.02 0.015; do
+    band_case "problem3_R${r}_le2_12x10_box_own_dt1us" "$here/problem3.prm" \
+      "$(problem3_edit 12 10 $r 2e6); $seed_box; $own_volume; $half_step"
+  done
+}
 # problem3_edit CELLS_X CELLS_Y RADIUS [E]: problem3.prm's substitutions
 problem3_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; ${4:+$(local_elastic "$4")}"; }
 # submit_full NAME PRM [sed expression]: the case at the paper's size (lsyf_4096) in
@@ -516,6 +543,8 @@ problem3() {
   problem3_perturbed
   problem3_fine_step
   problem3_against_r
+  problem3_against_r_averaged
+  problem3_own_half_step
   problem3_table
 }
 problem3_table() {
@@ -606,6 +635,8 @@ case "$what" in
   problem3_perturbed) problem3_perturbed; problem3_table ;;
   problem3_fine_step) problem3_fine_step; problem3_table ;;
   problem3_against_r) problem3_against_r; problem3_table ;;
+  problem3_against_r_averaged) problem3_against_r_averaged; problem3_table ;;
+  problem3_own_half_step) problem3_own_half_step; problem3_table ;;
   problem4) if [[ -n $full ]]; then problem4_full; else problem4; fi ;;
   problem4_rates) problem4_rates ;;
   macro_step) macro_step ;;

@@ -155,6 +155,9 @@ private:
   /// External forces with the reactions of the constrained dofs (energy_balance.h).
   dealii::Vector<double> external_with_reactions() const;
   void write_energy_row();
+  /// Once per run, on rank 0: a warning when the hourglass forces have done more than
+  /// EnergyBalance::hourglass_share_limit of the work put into the body.
+  void warn_of_hourglass_work();
   /// The material's stored energy over the mesh, sum of W(F) dV (NaN for RVEs).
   double strain_energy() const;
   /// Upper bound of the mesh's highest frequency (critical step 2/omega of explicit dynamics).
@@ -234,6 +237,7 @@ private:
   EnergyBalance energy_;
   std::ofstream energy_csv_;
   std::string energy_rows_; ///< rows of energy.csv so far (checkpointed)
+  bool hourglass_warned_ = false; ///< warn_of_hourglass_work() has warned in this process
   double t_start_ = 0.0;
   bool resume_ = false;
   bool fault_injected_ = false;

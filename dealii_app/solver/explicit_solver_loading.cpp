@@ -279,6 +279,30 @@ void ExplicitSolver<dim>::write_energy_row()
       << ',' << strain_energy() << '\n';
   energy_rows_ += row.str();
   energy_csv_ << row.str() << std::flush;
+  warn_of_hourglass_work();
+}
+
+// Hourglass forces do work only on the modes one point per element does not see: once that work is
+// a sizeable part of the internal work, those modes carry load and the points' stresses (what
+// summary.csv and history.h5 report) no longer balance it. On [LSYF] problem 3 with a nonlocal
+// radius of three element heights and 'Volume change' = own the hourglass work exceeded the
+// internal work (benchmarks/lsyf2016/README.md, problem 3, session 44).
+template <int dim>
+void ExplicitSolver<dim>::warn_of_hourglass_work()
+{
+  if (hourglass_warned_ || !(energy_.hourglass_share() > EnergyBalance::hourglass_share_limit))
+    return;
+  hourglass_warned_ = true;
+  std::cerr << "fe2dem: warning: load step " << step_ << ": the hourglass forces have done work "
+            << energy_.hourglass << ", " << 100.0 * energy_.hourglass_share() << " % of the work put into the body "
+            << energy_.work_done()
+            << " (the larger of internal_work and external_work in energy.csv): the one-point elements move in modes their "
+               "points do not see, and the stresses in summary.csv and history.h5 no longer carry the load by "
+               "themselves (keep the share below "
+            << 100.0 * EnergyBalance::hourglass_share_limit
+            << " %). Use a finer mesh or 'Quadrature' = full (subsection Finite elements); with subsection "
+               "Nonlocal see the user guide, 'Nonlocal operator', on the radius and 'Volume change'"
+            << std::endl;
 }
 
 template <int dim>

@@ -1,5 +1,8 @@
 #include "analyses/energy_balance.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace fe2dem::macro
@@ -24,6 +27,18 @@ void EnergyBalance::record(const dealii::Vector<double>& u, const dealii::Vector
   }
   kinetic = kinetic_energy;
   u_ = u, f_int_ = f_int, f_external_ = f_external, f_hourglass_ = f_hourglass;
+}
+
+double EnergyBalance::work_done() const
+{
+  return std::max(std::abs(internal), std::abs(external));
+}
+
+double EnergyBalance::hourglass_share() const
+{
+  if (hourglass == 0.0)
+    return 0.0;
+  return work_done() == 0.0 ? std::numeric_limits<double>::infinity() : std::abs(hourglass) / work_done();
 }
 
 std::vector<double> EnergyBalance::pack() const

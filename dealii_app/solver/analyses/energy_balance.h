@@ -38,6 +38,17 @@ public:
               double kinetic_energy);
   /// kinetic + internal - external: constant without damping.
   double balance() const { return kinetic + internal - external; }
+  /// |hourglass| / max(|internal|, |external|), the hourglass forces' share of the work put into the
+  /// body (the internal work includes the hourglass forces'; the external work keeps the share
+  /// finite when a vibration turns the internal work into kinetic energy); 0 while no work is done.
+  /// Above hourglass_share_limit the one-point elements move in modes their points do not see and
+  /// the stresses no longer carry the load by themselves.
+  double hourglass_share() const;
+  /// max(|internal|, |external|): hourglass_share()'s reference.
+  double work_done() const;
+  /// The usual ceiling of the hourglass work, a tenth of the internal work (the rule of thumb of
+  /// explicit codes with one-point elements, e.g. LS-DYNA's hourglass energy against internal energy).
+  static constexpr double hourglass_share_limit = 0.1;
   /// Everything, for checkpoints.
   std::vector<double> pack() const;
   void unpack(const std::vector<double>& packed);

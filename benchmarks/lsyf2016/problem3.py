@@ -152,6 +152,13 @@ R_FAMILIES = {family: {r: (base, tuple(k for k in CASES if k.startswith(base + "
                                        for r in (10.0, 15.0, 20.0))}
               for family, suffix in (("own volume", ", own volume"), ("averaged volume", ""))}
 APPLIED = 4.16e5  # Pa, the top's vertical stress (problem3.prm)
+# the R = 20 mm own-volume case for its first 1 % of shear, one ingredient changed at a time (run.sh
+# problem3_hourglass_probe; two rows, so not in CASES): {label: directory}
+PROBES = {"R = 20 mm, own volume, seed box, 2 us (as problem3_against_r)": "probe_R0.02_own_box",
+          "... without the seed": "probe_R0.02_own_no_seed",
+          "... without C_e (total strain)": "probe_R0.02_own_box_total_strain",
+          "... with the averaged volume": "probe_R0.02_averaged_box",
+          "... at 1 us": "probe_R0.02_own_box_dt1us"}
 BACKWARDS = -0.01  # a shear increment below this over the last BAND_ROWS rows: an IP shearing backwards
 # the band's directions in simple shear: along the shear, within 20 degrees of x (the local runs' band
 # is at 4 degrees); among all directions the finder can return a hot spot around the weak RVE
@@ -563,6 +570,31 @@ def equilibrium(results, k, d):
     return share, rows
 
 
+def print_probes(results):
+    """PROBES that exist: per row the hourglass share (equilibrium()'s) and the kinetic energy over the
+    larger of the internal and external work, and the rows' sigma_22 departure at the last row."""
+    probes = {k: c for k, c in PROBES.items() if os.path.exists(os.path.join(results, c, "wall_s"))}
+    if not probes:
+        return
+    print("\n## which ingredient makes the hourglass forces do the work: the R = 20 mm own-volume case over its "
+          "first 1 % of shear (two rows)")
+    print("| case | hourglass share, row 1 / row 2 | kinetic energy / work, row 1 / row 2 "
+          "| rows' sigma_22: largest departure / applied, row 2 | wall (s) |")
+    print("|---|---|---|---|---|")
+    for k, c in probes.items():
+        with open(os.path.join(results, c, "out", "energy.csv")) as f:
+            rows = list(csv.DictReader(f))
+        work = [max(abs(float(r["internal_work"])), abs(float(r["external_work"]))) for r in rows]
+        share = [abs(float(r["hourglass_work"])) / w for r, w in zip(rows, work)]
+        kinetic = [float(r["kinetic_energy"]) / w for r, w in zip(rows, work)]
+        d = read(os.path.join(results, c))
+        s22 = -d["sigma"].reshape(len(d["step"]), -1, 9)[-1, :, 4]
+        departure = np.abs(row_means(d["ip_position"], s22)[1] - APPLIED).max() / APPLIED
+        wall = float(open(os.path.join(results, c, "wall_s")).read())
+        print(f"| {k} | {' / '.join(f'{v:.3f}' for v in share)} | {' / '.join(f'{v:.3f}' for v in kinetic)} "
+              f"| {departure:.2f} | {wall:.0f} |")
+
+
 def print_equilibrium(results, done):
     """Every case's equilibrium (equilibrium()): the hourglass share and the rows' sigma_22."""
     print("\n## equilibrium of the points' stresses: the hourglass work's share of the work at the end "
@@ -778,6 +810,7 @@ def main():
         png = "problem3_against_r.png" if name == "own volume" else f"problem3_against_r_{name.split()[0]}.png"
         print_against_r(results, done, name, family, os.path.join(results, png))
     print_equilibrium(results, done)
+    print_probes(results)
     with open(os.path.join(results, "problem3.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["case", "x", "y", "in_band", "porosity", "coordination", "sliding_fraction", "mean_rotation"])

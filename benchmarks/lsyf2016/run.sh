@@ -65,6 +65,9 @@
 #              (unperturbed, +1, +2 ppm; session 44). About 11 min per run alone
 #   problem3_own_half_step  the own-volume runs at R = 20 and 15 mm on 12x10 at half the default
 #              step (1 us): is their hourglass-dominated state the step's? (session 44; 22 min each)
+#   problem3_hourglass_probe  the R = 20 mm own-volume case for its first 1 % of shear (two load
+#              steps) without the seed, without C_e, with the averaged volume and at 1 us: which of
+#              them makes the hourglass forces do the work (session 44; 1.5-3 min each)
 #   problem4_rates  problem4.prm's RVE alone in plane strain
 #              (problem4_element.prm) at 4, 2, 1 and 0.5 /s to 8 %
 #   cv_shear   problem 3's packings (lsyf_300, lsyf_300_weak) sheared at constant volume, fe2dem-rve
@@ -84,7 +87,7 @@
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
 # result exists and whose parameter file is unchanged is not run again.
 #
-#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem3_fixed_r|problem3_own_volume|problem3_converged|problem3_perturbed|problem3_fine_step|problem3_against_r|problem3_against_r_averaged|problem3_own_half_step|problem4|problem4_rates|macro_step|cv_shear|tables|all [--full]
+#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem3_fixed_r|problem3_own_volume|problem3_converged|problem3_perturbed|problem3_fine_step|problem3_against_r|problem3_against_r_averaged|problem3_own_half_step|problem3_hourglass_probe|problem4|problem4_rates|macro_step|cv_shear|tables|all [--full]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -484,6 +487,18 @@ problem3_own_half_step() {
       "$(problem3_edit 12 10 $r 2e6); $seed_box; $own_volume; $half_step"
   done
 }
+# ... and that case's first 1 % of shear (two load steps at the same rate), one ingredient changed at a
+# time: the seed removed, C_e removed (total strain), the averaged volume, half the step
+problem3_hourglass_probe() {
+  local short='s#set End time   = 0.02#set End time   = 0.0025#; s#set Load steps = 16#set Load steps = 2#'
+  local r20 no_seed='/^subsection Imperfection/,/^end/d'
+  r20=$(problem3_edit 12 10 0.02 2e6)
+  band_case probe_R0.02_own_box "$here/problem3.prm" "$r20; $seed_box; $own_volume; $short"
+  band_case probe_R0.02_own_no_seed "$here/problem3.prm" "$r20; $no_seed; $own_volume; $short"
+  band_case probe_R0.02_averaged_box "$here/problem3.prm" "$r20; $seed_box; $short"
+  band_case probe_R0.02_own_box_total_strain "$here/problem3.prm" "$(problem3_edit 12 10 0.02); $seed_box; $own_volume; $short"
+  band_case probe_R0.02_own_box_dt1us "$here/problem3.prm" "$r20; $seed_box; $own_volume; $(time_step_edit 1e-6); $short"
+}
 # problem3_edit CELLS_X CELLS_Y RADIUS [E]: problem3.prm's substitutions
 problem3_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; ${4:+$(local_elastic "$4")}"; }
 # submit_full NAME PRM [sed expression]: the case at the paper's size (lsyf_4096) in
@@ -545,6 +560,7 @@ problem3() {
   problem3_against_r
   problem3_against_r_averaged
   problem3_own_half_step
+  problem3_hourglass_probe
   problem3_table
 }
 problem3_table() {
@@ -637,6 +653,7 @@ case "$what" in
   problem3_against_r) problem3_against_r; problem3_table ;;
   problem3_against_r_averaged) problem3_against_r_averaged; problem3_table ;;
   problem3_own_half_step) problem3_own_half_step; problem3_table ;;
+  problem3_hourglass_probe) problem3_hourglass_probe; problem3_table ;;
   problem4) if [[ -n $full ]]; then problem4_full; else problem4; fi ;;
   problem4_rates) problem4_rates ;;
   macro_step) macro_step ;;

@@ -426,9 +426,7 @@ def print_scatter(results, done, ensembles, groups):
                   f"averaged F {w[:, 1].min():.1f}-{w[:, 1].max():.1f} mm, span {np.ptp(w[:, 1]):.1f}, "
                   f"mean {w[:, 1].mean():.1f}, standard deviation {w[:, 1].std(ddof=1):.1f}")
         for la, lb in pairs:
-            a, b = stats[la], stats[lb]
-            se = np.sqrt(a.var(axis=0, ddof=1) / len(a) + b.var(axis=0, ddof=1) / len(b))
-            dm = b.mean(axis=0) - a.mean(axis=0)
+            dm, se = mean_difference(stats[la], stats[lb])
             print(f"- mean {lb} minus mean {la}: {dm[0]:+.1f} mm (elements' F), "
                   f"{dm[1]:+.1f} mm (averaged F); standard error of the difference {se[0]:.1f} / {se[1]:.1f} mm")
         if len(labels) >= 3:
@@ -445,6 +443,13 @@ def print_scatter(results, done, ensembles, groups):
         print(f"- {lb} against {la}: the largest difference of a run's from the unperturbed run {la} "
               f"{diff:+.4f} (at {100 * at:.1f} %); the ensembles' mean tau/p within "
               f"{np.abs(mean_b - mean_a).max():.4f} at every row")
+
+
+def mean_difference(a, b):
+    """(mean of @p b minus mean of @p a, the standard error of that difference), per column of the
+    ensembles' widths @p a, @p b [runs, (elements' F, averaged F)]."""
+    se = np.sqrt(a.var(axis=0, ddof=1) / len(a) + b.var(axis=0, ddof=1) / len(b))
+    return b.mean(axis=0) - a.mean(axis=0), se
 
 
 def print_step_fit(stats):
@@ -657,9 +662,7 @@ def print_against_r(results, done, name, family, path):
             print(f"| {r:g} | {len(w)} | {m[0]:.1f} +- {se[0]:.1f} | {m[0] / r:.2f} | {m[1]:.1f} +- {se[1]:.1f} "
                   f"| {m[1] / r:.2f} |")
         for ra, rb in zip(radii, radii[1:]):
-            a, b = stats[ra], stats[rb]
-            se = np.sqrt(a.var(axis=0, ddof=1) / len(a) + b.var(axis=0, ddof=1) / len(b))
-            dm = b.mean(axis=0) - a.mean(axis=0)
+            dm, se = mean_difference(stats[ra], stats[rb])
             print(f"- R = {rb:g} minus R = {ra:g} mm: {dm[0]:+.1f} +- {se[0]:.1f} mm (elements' F), "
                   f"{dm[1]:+.1f} +- {se[1]:.1f} mm (averaged F)")
         if len(radii) >= 3:

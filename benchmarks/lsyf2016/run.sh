@@ -64,7 +64,8 @@
 #   problem3_against_r_averaged  the same with 'Volume change' = averaged at R = 10, 15, 20 mm
 #              (unperturbed, +1, +2 ppm; session 44). About 11 min per run alone
 #   problem3_own_half_step  the own-volume runs at R = 20 and 15 mm on 12x10 at half the default
-#              step (1 us): is their hourglass-dominated state the step's? (session 44; 22 min each)
+#              step (1 us), and R = 20 mm +1 ppm: is their hourglass-dominated state the step's?
+#              (session 44; 22 min each)
 #   problem3_hourglass_probe  the R = 20 mm own-volume case for its first 1 % of shear (two load
 #              steps) without the seed, without C_e, with the averaged volume and at 1 us: which of
 #              them makes the hourglass forces do the work (session 44; 1.5-3 min each)
@@ -479,13 +480,16 @@ problem3_against_r_averaged() {
   done
 }
 # ... and the own-volume runs at R = 20 and 15 mm at half the default step: two load steps of the R =
-# 20 mm case at 1 us stayed at 1.6 % of hourglass work where 2 us had 91 % (session 44)
+# 20 mm case at 1 us stayed at 1.6 % of hourglass work where 2 us had 54 % (session 44); then R = 20 mm
+# with the top's pressure 1 ppm higher
 problem3_own_half_step() {
   local r
   for r in 0.02 0.015; do
     band_case "problem3_R${r}_le2_12x10_box_own_dt1us" "$here/problem3.prm" \
       "$(problem3_edit 12 10 $r 2e6); $seed_box; $own_volume; $half_step"
   done
+  band_case problem3_R0.02_le2_12x10_box_own_dt1us_p1 "$here/problem3.prm" \
+    "$(problem3_edit 12 10 0.02 2e6); $seed_box; $own_volume; $half_step; $(top_pressure_edit 1)"
 }
 # ... and that case's first 1 % of shear (two load steps at the same rate), one ingredient changed at a
 # time: the seed removed, C_e removed (total strain), the averaged volume, half the step

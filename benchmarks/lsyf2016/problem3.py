@@ -93,7 +93,9 @@ CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "p
             f"problem3_R{radius}_le2_12x10_box_p{k}"
             for r, radius in ((10, "0.01"), (15, "0.015"), (20, "0.02")) for k in range(1, 3)},
          **{f"R = {r} mm, local elastic 2 MPa, 12x10, seed box, own volume, 1 us step":
-            f"problem3_R{radius}_le2_12x10_box_own_dt1us" for r, radius in ((15, "0.015"), (20, "0.02"))}}
+            f"problem3_R{radius}_le2_12x10_box_own_dt1us" for r, radius in ((15, "0.015"), (20, "0.02"))},
+         "R = 20 mm, local elastic 2 MPa, 12x10, seed box, own volume, 1 us step, top pressure +1 ppm":
+             "problem3_R0.02_le2_12x10_box_own_dt1us_p1"}
 # the band width against R and the mesh: (R in mm, element height in mm, case)
 # The macro step is fe2dem's default (5 us on 12x5, 2 us on 12x10 and 12x15, 1 us on 12x20) but where the
 # case names it (run.sh problem3_step_cases, problem3_band_cases, problem3_scaled_cases; README,
@@ -152,6 +154,10 @@ R_FAMILIES = {family: {r: (base, tuple(k for k in CASES if k.startswith(base + "
                                        for r in (10.0, 15.0, 20.0))}
               for family, suffix in (("own volume", ", own volume"), ("averaged volume", ""))}
 APPLIED = 4.16e5  # Pa, the top's vertical stress (problem3.prm)
+# ... and own volume at 1 us, (R in mm, case) (run.sh problem3_own_half_step; R = 10 mm's is CONVERGED[1])
+HALF_STEP = [(10.0, CONVERGED[1]),
+             *((r, f"R = {r:g} mm, local elastic 2 MPa, 12x10, seed box, own volume, 1 us step") for r in (15.0, 20.0)),
+             (20.0, "R = 20 mm, local elastic 2 MPa, 12x10, seed box, own volume, 1 us step, top pressure +1 ppm")]
 # the R = 20 mm own-volume case for its first 1 % of shear, one ingredient changed at a time (run.sh
 # problem3_hourglass_probe; two rows, so not in CASES): {label: directory}
 PROBES = {"R = 20 mm, own volume, seed box, 2 us (as problem3_against_r)": "probe_R0.02_own_box",
@@ -623,6 +629,39 @@ def inside_outside(d, inside):
     return {q: (v[inside].mean(), v[~inside].mean()) for q, v in values.items()}
 
 
+def print_run_header():
+    """The header of print_run_row's table."""
+    print("| R (mm) | run | tau/p at 8 % | weak RVEs' p at the end (kPa) | hourglass share | width, last 4 rows (mm): "
+          "elements' / averaged F | last 8 rows | peak at y (mm) |")
+    print("|---|---|---|---|---|---|---|---|")
+
+
+def print_run_row(results, k, d, r, run):
+    """One row of case @p k (@p d its read()), R = @p r mm, labelled @p run: tau/p at the end, the
+    weak RVEs' pressure, the hourglass share (equilibrium()), the end widths over the last BAND_ROWS
+    and 2 BAND_ROWS rows (nan: the profile does not fall to half its peak inside the specimen) and
+    the profile's peak."""
+    _, tp = curve(d)
+    p = weak_stress(d)[1][-1]
+    (w4, y), (w4_seen, _) = (profile(results, k, f) for f in ("F", "F_nonlocal"))
+    w8, w8_seen = (profile(results, k, f, -1, 2 * BAND_ROWS)[0] for f in ("F", "F_nonlocal"))
+    share = equilibrium(results, k, d)[0]
+    print(f"| {r:g} | {run} | {tp[-1]:.3f} | {', '.join(f'{v / 1e3:.0f}' for v in p)} | {share:.3f} "
+          f"| {1e3 * w4:.1f} / {1e3 * w4_seen:.1f} | {1e3 * w8:.1f} / {1e3 * w8_seen:.1f} | {1e3 * y:.1f} |")
+
+
+def print_half_step(results, done):
+    """The own-volume runs at 1 us (HALF_STEP), after the 2 us runs at R = 15 and 20 mm were
+    hourglass-dominated (run.sh problem3_own_half_step), in print_run_row's table."""
+    runs = [(r, k) for r, k in HALF_STEP if k in done]
+    if not runs:
+        return
+    print("\n## the own-volume case at half the default step, 1 us (12x10, seed box, C_e of E = 2 MPa)")
+    print_run_header()
+    for r, k in runs:
+        print_run_row(results, k, done[k], r, k.split(", ")[-1] if "ppm" in k else "unperturbed")
+
+
 def print_against_r(results, done, name, family, path):
     """The band's width against R from the ensembles of @p family (R_FAMILIES[@p name];
     against_r_runs): each run's tau/p at 8 %, weak RVEs' pressure, hourglass share (equilibrium())
@@ -635,20 +674,10 @@ def print_against_r(results, done, name, family, path):
     if len(ensembles) < 2:
         return
     print(f"\n## the width against R: the 2 us ensembles (12x10, seed box, {name}, C_e of E = 2 MPa)")
-    print("| R (mm) | run | tau/p at 8 % | weak RVEs' p at the end (kPa) | hourglass share | width, last 4 rows (mm): "
-          "elements' / averaged F | last 8 rows | peak at y (mm) |")
-    print("|---|---|---|---|---|---|---|---|")
+    print_run_header()
     for r, members in ensembles.items():
         for k in members:
-            d = done[k]
-            _, tp = curve(d)
-            p = weak_stress(d)[1][-1]
-            (w4, y), (w4_seen, _) = (profile(results, k, f) for f in ("F", "F_nonlocal"))
-            w8, w8_seen = (profile(results, k, f, -1, 2 * BAND_ROWS)[0] for f in ("F", "F_nonlocal"))
-            run = k[len(family[r][0]) + 2:] or "unperturbed"
-            share = equilibrium(results, k, d)[0]
-            print(f"| {r:g} | {run} | {tp[-1]:.3f} | {', '.join(f'{v / 1e3:.0f}' for v in p)} | {share:.3f} "
-                  f"| {1e3 * w4:.1f} / {1e3 * w4_seen:.1f} | {1e3 * w8:.1f} / {1e3 * w8_seen:.1f} | {1e3 * y:.1f} |")
+            print_run_row(results, k, done[k], r, k[len(family[r][0]) + 2:] or "unperturbed")
     radii = np.array(list(ensembles))
     for rows in (BAND_ROWS, 2 * BAND_ROWS):
         stats = {r: 1e3 * np.array([[profile(results, k, f, -1, rows)[0] for f in ("F", "F_nonlocal")]
@@ -693,20 +722,27 @@ def print_against_r(results, done, name, family, path):
             m, se = v.mean(axis=0), v.std(axis=0, ddof=1) / np.sqrt(len(v))
             cells.append(f"{m[0]:.4f} +- {se[0]:.4f} / {m[1]:.4f} +- {se[1]:.4f}")
         print(f"| {r:g} | {len(members)} | {min(n_in)}-{max(n_in)} of {len(gamma)} | " + " | ".join(cells) + " |")
-    plot_against_r(results, ensembles, widths, path)
+    invalid = {r for r, members in ensembles.items()
+               if any(equilibrium(results, k, done[k])[0] > 0.1 for k in members)}
+    plot_against_r(results, ensembles, widths, invalid, f"{name}, 2 us", path)
 
 
-def plot_against_r(results, ensembles, widths, path):
+def plot_against_r(results, ensembles, widths, invalid, title, path):
     """Two panels into @p path: each run's end width over the last 2 BAND_ROWS rows and the ensemble
-    means +- standard error against R (@p widths: {R: [runs, (elements' F, averaged F)]}, mm), the
-    line width = R and 2 R beside them; and each ensemble's mean row profile of the elements' F."""
+    means +- standard error against R (@p widths: {R: [runs, (elements' F, averaged F)]}, mm; the
+    radii in @p invalid, whose runs' hourglass share passed 0.1, hollow), the line width = R and 2 R
+    beside them; and each ensemble's mean row profile of the elements' F."""
     fig, (ax, bx) = plt.subplots(1, 2, figsize=(9, 3.8))
     for col, (name, marker) in enumerate((("elements' F", "o"), ("averaged F", "s"))):
         for i, (r, w) in enumerate(widths.items()):
             shift = 0.3 * (col - 0.5)
-            ax.plot(np.full(len(w), r + shift), w[:, col], marker, color=f"C{col}", ms=3, alpha=0.5)
+            face = "none" if r in invalid else f"C{col}"
+            ax.plot(np.full(len(w), r + shift), w[:, col], marker, color=f"C{col}", mfc=face, ms=3, alpha=0.5)
             ax.errorbar(r + shift, w[:, col].mean(), w[:, col].std(ddof=1) / np.sqrt(len(w)), fmt=marker,
-                        color=f"C{col}", ms=7, capsize=3, label=f"{name}, mean +- s.e." if i == 0 else None)
+                        color=f"C{col}", mfc=face, ms=7, capsize=3,
+                        label=f"{name}, mean +- s.e." if i == 0 else None)
+    ax.set_title(title + (f"; hollow: hourglass share > 0.1 at R = {', '.join(f'{r:g}' for r in sorted(invalid))} mm, "
+                          "not equilibria" if invalid else ""), fontsize=7)
     r = np.array([0, max(widths) + 2])
     ax.plot(r, r, "k:", lw=0.8, label="width = R")
     ax.plot(r, 2 * r, "k--", lw=0.8, label="width = 2 R")
@@ -812,6 +848,7 @@ def main():
     for name, family in R_FAMILIES.items():
         png = "problem3_against_r.png" if name == "own volume" else f"problem3_against_r_{name.split()[0]}.png"
         print_against_r(results, done, name, family, os.path.join(results, png))
+    print_half_step(results, done)
     print_equilibrium(results, done)
     print_probes(results)
     with open(os.path.join(results, "problem3.csv"), "w", newline="") as f:

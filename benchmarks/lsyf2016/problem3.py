@@ -695,8 +695,8 @@ def print_against_r(results, done, name, family, path):
             print(f"- R = {rb:g} minus R = {ra:g} mm: {dm[0]:+.1f} +- {se[0]:.1f} mm (elements' F), "
                   f"{dm[1]:+.1f} +- {se[1]:.1f} mm (averaged F)")
         if len(radii) >= 3:
-            for name, (a, b, chi2) in linear_fit(radii, stats.values()):
-                print(f"- {name}: fit of the means against R, w = {a[0]:.1f} +- {a[1]:.1f} mm + "
+            for field, (a, b, chi2) in linear_fit(radii, stats.values()):
+                print(f"- {field}: fit of the means against R, w = {a[0]:.1f} +- {a[1]:.1f} mm + "
                       f"({b[0]:.2f} +- {b[1]:.2f}) R; chi^2 {chi2:.1f} on {len(radii) - 2} degree(s) of freedom")
         print_step_permutation(stats, "R", "radii")
         if rows == 2 * BAND_ROWS:

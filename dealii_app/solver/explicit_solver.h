@@ -155,8 +155,8 @@ private:
   /// External forces with the reactions of the constrained dofs (energy_balance.h).
   dealii::Vector<double> external_with_reactions() const;
   void write_energy_row();
-  /// Once per run, on rank 0: a warning when the hourglass forces have done more than
-  /// EnergyBalance::hourglass_share_limit of the work put into the body.
+  /// Once per process (again after --resume), on rank 0: a warning when the hourglass forces have
+  /// done more than EnergyBalance::hourglass_share_limit of the work put into the body.
   void warn_of_hourglass_work();
   /// The material's stored energy over the mesh, sum of W(F) dV (NaN for RVEs).
   double strain_energy() const;

@@ -283,10 +283,11 @@ void ExplicitSolver<dim>::write_energy_row()
 }
 
 // Hourglass forces do work only on the modes one point per element does not see: once that work is
-// a sizeable part of the internal work, those modes carry load and the points' stresses (what
+// a sizeable part of the work done, those modes carry load and the points' stresses (what
 // summary.csv and history.h5 report) no longer balance it. On [LSYF] problem 3 with a nonlocal
-// radius of three element heights and 'Volume change' = own the hourglass work exceeded the
-// internal work (benchmarks/lsyf2016/README.md, problem 3, session 44).
+// radius of three and four element heights, 'Volume change' = own and the default macro step, the
+// hourglass work exceeded the work done (benchmarks/lsyf2016/README.md, problem 3, session 44).
+// Once per process: a resumed run that is still above the limit warns again.
 template <int dim>
 void ExplicitSolver<dim>::warn_of_hourglass_work()
 {

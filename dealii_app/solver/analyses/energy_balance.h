@@ -46,8 +46,8 @@ public:
   double hourglass_share() const;
   /// max(|internal|, |external|): hourglass_share()'s reference.
   double work_done() const;
-  /// The usual ceiling of the hourglass work, a tenth of the internal work (the rule of thumb of
-  /// explicit codes with one-point elements, e.g. LS-DYNA's hourglass energy against internal energy).
+  /// The usual ceiling of the hourglass work, a tenth of the work done (the rule of thumb of explicit
+  /// codes with one-point elements, e.g. LS-DYNA's hourglass energy against internal energy).
   static constexpr double hourglass_share_limit = 0.1;
   /// Everything, for checkpoints.
   std::vector<double> pack() const;

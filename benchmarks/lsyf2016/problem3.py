@@ -565,24 +565,34 @@ def against_r_runs(done, family):
     return {r: members for r, members in runs.items() if family[r][0] in done and len(members) >= 2}
 
 
+def energy_shares(case_dir):
+    """(hourglass share, kinetic share) per row of the run's energy.csv: the hourglass forces' work and
+    the kinetic energy over the larger of the internal and external work (fe2dem's
+    EnergyBalance::hourglass_share; fe2dem warns above 0.1)."""
+    with open(os.path.join(case_dir, "out", "energy.csv")) as f:
+        rows = list(csv.DictReader(f))
+    work = np.array([max(abs(float(r["internal_work"])), abs(float(r["external_work"]))) for r in rows])
+    return (np.array([abs(float(r["hourglass_work"])) for r in rows]) / work,
+            np.array([float(r["kinetic_energy"]) for r in rows]) / work)
+
+
+def rows_departure(d, row):
+    """The largest departure of a row of IPs' mean sigma_22 from the applied APPLIED at history.h5's
+    row @p row of run @p d, over APPLIED. The rows' sigma_22 must equal the top's stress in
+    equilibrium (the sides are free in y), so a large departure says the points' stresses do not
+    carry the load: the hourglass forces do."""
+    s22 = -d["sigma"].reshape(len(d["step"]), -1, 9)[row, :, 4]
+    return np.abs(row_means(d["ip_position"], s22)[1] - APPLIED).max() / APPLIED
+
+
 def equilibrium(results, k, d):
-    """(hourglass share, rows' vertical stress) of case @p k: the hourglass forces' work over the larger
-    of the internal and external work at the end (energy.csv; fe2dem warns above 0.1), and the largest
-    departure of a row of IPs' mean sigma_22 from the applied APPLIED over all rows of history.h5,
-    over APPLIED. The rows' sigma_22 must equal the top's stress in equilibrium (the sides are free in
-    y), so a large departure says the points' stresses do not carry the load: the hourglass forces
-    do."""
-    with open(os.path.join(results, CASES[k], "out", "energy.csv")) as f:
-        last = list(csv.DictReader(f))[-1]
-    work = max(abs(float(last["internal_work"])), abs(float(last["external_work"])))
-    share = abs(float(last["hourglass_work"])) / work
-    s22 = -d["sigma"].reshape(len(d["step"]), -1, 9)[:, :, 4]
-    rows = max(np.abs(row_means(d["ip_position"], v)[1] - APPLIED).max() for v in s22) / APPLIED
-    return share, rows
+    """(hourglass share at the end, largest rows_departure over all rows) of case @p k."""
+    share = energy_shares(os.path.join(results, CASES[k]))[0][-1]
+    return share, max(rows_departure(d, row) for row in range(len(d["step"])))
 
 
 def print_probes(results):
-    """PROBES that exist: per row the hourglass share (equilibrium()'s) and the kinetic energy over the
+    """PROBES that exist: per row the hourglass share and the kinetic energy over the
     larger of the internal and external work, and the rows' sigma_22 departure at the last row."""
     probes = {k: c for k, c in PROBES.items() if os.path.exists(os.path.join(results, c, "wall_s"))}
     if not probes:
@@ -593,14 +603,8 @@ def print_probes(results):
           "| rows' sigma_22: largest departure / applied, row 2 | wall (s) |")
     print("|---|---|---|---|---|")
     for k, c in probes.items():
-        with open(os.path.join(results, c, "out", "energy.csv")) as f:
-            rows = list(csv.DictReader(f))
-        work = [max(abs(float(r["internal_work"])), abs(float(r["external_work"]))) for r in rows]
-        share = [abs(float(r["hourglass_work"])) / w for r, w in zip(rows, work)]
-        kinetic = [float(r["kinetic_energy"]) / w for r, w in zip(rows, work)]
-        d = read(os.path.join(results, c))
-        s22 = -d["sigma"].reshape(len(d["step"]), -1, 9)[-1, :, 4]
-        departure = np.abs(row_means(d["ip_position"], s22)[1] - APPLIED).max() / APPLIED
+        share, kinetic = energy_shares(os.path.join(results, c))
+        departure = rows_departure(read(os.path.join(results, c)), -1)
         wall = float(open(os.path.join(results, c, "wall_s")).read())
         print(f"| {k} | {' / '.join(f'{v:.3f}' for v in share)} | {' / '.join(f'{v:.3f}' for v in kinetic)} "
               f"| {departure:.2f} | {wall:.0f} |")
@@ -618,15 +622,14 @@ def print_equilibrium(results, done):
         print(f"| {k} | {share:.3f}{' **(above 0.1)**' if share > 0.1 else ''} | {rows:.2f} |")
 
 
-def inside_outside(d, inside):
-    """{quantity: (mean inside, mean outside)} at the last row of run @p d over the IPs @p inside
-    (a boolean mask) and the rest: porosity, coordination, the sliding fraction and the inner
-    particles' mean rotation (None for runs made before fe2dem recorded it)."""
-    values = {"porosity": 1.0 - d["packing_fraction"][-1], "coordination": d["coordination"][-1],
-              "sliding fraction": d["sliding_contacts"][-1] / np.maximum(d["contacts"][-1], 1)}
-    if d["mean_rotation"] is not None:
-        values["mean rotation (rad)"] = d["mean_rotation"][-1]
-    return {q: (v[inside].mean(), v[~inside].mean()) for q, v in values.items()}
+def micro_fields(d):
+    """{quantity: its value at each IP at the last row of run @p d}: porosity 1 - solid fraction,
+    coordination 2C/N, the fraction of sliding contacts and the inner particles' mean rotation (rad;
+    NaN for runs made before fe2dem recorded it)."""
+    rotation = d["mean_rotation"][-1] if d["mean_rotation"] is not None else np.full(len(d["ip_position"]), np.nan)
+    return {"porosity": 1.0 - d["packing_fraction"][-1], "coordination": d["coordination"][-1],
+            "sliding fraction": d["sliding_contacts"][-1] / np.maximum(d["contacts"][-1], 1),
+            "mean rotation (rad)": rotation}
 
 
 def print_run_header():
@@ -638,16 +641,17 @@ def print_run_header():
 
 def print_run_row(results, k, d, r, run):
     """One row of case @p k (@p d its read()), R = @p r mm, labelled @p run: tau/p at the end, the
-    weak RVEs' pressure, the hourglass share (equilibrium()), the end widths over the last BAND_ROWS
+    weak RVEs' pressure, the hourglass share (energy_shares()), the end widths over the last BAND_ROWS
     and 2 BAND_ROWS rows (nan: the profile does not fall to half its peak inside the specimen) and
-    the profile's peak."""
+    the profile's peak. Returns the hourglass share."""
     _, tp = curve(d)
     p = weak_stress(d)[1][-1]
     (w4, y), (w4_seen, _) = (profile(results, k, f) for f in ("F", "F_nonlocal"))
     w8, w8_seen = (profile(results, k, f, -1, 2 * BAND_ROWS)[0] for f in ("F", "F_nonlocal"))
-    share = equilibrium(results, k, d)[0]
+    share = energy_shares(os.path.join(results, CASES[k]))[0][-1]
     print(f"| {r:g} | {run} | {tp[-1]:.3f} | {', '.join(f'{v / 1e3:.0f}' for v in p)} | {share:.3f} "
           f"| {1e3 * w4:.1f} / {1e3 * w4_seen:.1f} | {1e3 * w8:.1f} / {1e3 * w8_seen:.1f} | {1e3 * y:.1f} |")
+    return share
 
 
 def print_half_step(results, done):
@@ -664,7 +668,7 @@ def print_half_step(results, done):
 
 def print_against_r(results, done, name, family, path):
     """The band's width against R from the ensembles of @p family (R_FAMILIES[@p name];
-    against_r_runs): each run's tau/p at 8 %, weak RVEs' pressure, hourglass share (equilibrium())
+    against_r_runs): each run's tau/p at 8 %, weak RVEs' pressure, hourglass share (energy_shares())
     and end widths; per R the mean width +- its standard error over
     the last BAND_ROWS and 2 BAND_ROWS rows, width / R, each R against the next smaller, the fit w = a
     + b R and the permutation test; the band's inside against its outside as ensemble means (inside:
@@ -675,9 +679,11 @@ def print_against_r(results, done, name, family, path):
         return
     print(f"\n## the width against R: the 2 us ensembles (12x10, seed box, {name}, C_e of E = 2 MPa)")
     print_run_header()
+    invalid = set()  # the radii with a run whose hourglass share passed 0.1
     for r, members in ensembles.items():
         for k in members:
-            print_run_row(results, k, done[k], r, k[len(family[r][0]) + 2:] or "unperturbed")
+            if print_run_row(results, k, done[k], r, k[len(family[r][0]) + 2:] or "unperturbed") > 0.1:
+                invalid.add(r)
     radii = np.array(list(ensembles))
     for rows in (BAND_ROWS, 2 * BAND_ROWS):
         stats = {r: 1e3 * np.array([[profile(results, k, f, -1, rows)[0] for f in ("F", "F_nonlocal")]
@@ -712,18 +718,15 @@ def print_against_r(results, done, name, family, path):
             _, gamma, _, _, _ = inplane_band(os.path.join(results, CASES[k], "out", "history.h5"), BAND_ROWS)
             inside = gamma > 0.5 * gamma.max()
             n_in.append(int(inside.sum()))
-            per_run.append(inside_outside(done[k], inside))
+            per_run.append([(v[inside].mean(), v[~inside].mean()) for v in micro_fields(done[k]).values()])
         cells = []
-        for q in ("porosity", "coordination", "sliding fraction", "mean rotation (rad)"):
-            if not all(q in v for v in per_run):
+        for v in np.array(per_run).transpose(1, 0, 2):  # per quantity [runs, (in, out)]
+            if np.isnan(v).any():
                 cells.append("-")
                 continue
-            v = np.array([v[q] for v in per_run])  # [runs, (in, out)]
             m, se = v.mean(axis=0), v.std(axis=0, ddof=1) / np.sqrt(len(v))
             cells.append(f"{m[0]:.4f} +- {se[0]:.4f} / {m[1]:.4f} +- {se[1]:.4f}")
         print(f"| {r:g} | {len(members)} | {min(n_in)}-{max(n_in)} of {len(gamma)} | " + " | ".join(cells) + " |")
-    invalid = {r for r, members in ensembles.items()
-               if any(equilibrium(results, k, done[k])[0] > 0.1 for k in members)}
     plot_against_r(results, ensembles, widths, invalid, f"{name}, 2 us", path)
 
 
@@ -816,10 +819,7 @@ def main():
         _, _, width_seen, _, _ = inplane_band(history, BAND_ROWS, ALONG_X, "F_nonlocal")
         widths[k] = (width_x, width_seen)
         inside = gamma > 0.5 * gamma.max()
-        porosity = 1.0 - d["packing_fraction"][-1]
-        coordination = d["coordination"][-1]
-        sliding = d["sliding_contacts"][-1] / np.maximum(d["contacts"][-1], 1)
-        rotation = d["mean_rotation"][-1] if d["mean_rotation"] is not None else np.full(len(x), np.nan)
+        porosity, coordination, sliding, rotation = micro_fields(d).values()
 
         def in_out(v):
             return "-" if np.isnan(v).all() else f"{v[inside].mean():.3f} / {v[~inside].mean():.3f}"

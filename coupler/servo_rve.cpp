@@ -198,6 +198,7 @@ const typename ServoRve<dim>::Result& ServoRve<dim>::solve(const Matrix& F, long
   }
   if (fix_->timed_steps() != solve_budget_.timed_steps())
     fix_->set_timed_steps(solve_budget_.timed_steps());
+  fix_->set_timed_mean(solve_budget_.timed_stress == SolveBudget::TimedStress::mean_of_checks);
   fix_->set_deformation(F);
   run_until_done(bounded);
   return fix_->result();
@@ -247,6 +248,7 @@ template <int dim>
 void ServoRve<dim>::timed_solve(const Matrix& F, long steps, TimedTally& tally)
 {
   fix_->set_timed_steps(steps);
+  fix_->set_timed_mean(true); // the continuous drive and the hold judge a solve by its mean
   fix_->set_deformation(F);
   run_until_done(); // a timed solve ends converged; a failure throws
   tally.dem_steps += fix_->result().dem_steps;

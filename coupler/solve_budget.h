@@ -8,9 +8,13 @@
  *  - bounded(n): multiple time stepping ([LSYF] Eq. 66): at most n DEM
  *    steps, then the state as it is (RveResponse::converged false). n is
  *    rounded up to whole check intervals (a solve stops only on a check);
- *  - timed(n): explicit dynamics: exactly n DEM steps (the macro time step
- *    over the DEM step), the frame moving to the new F with the servo as a
- *    continuous feedback, stresses averaged over the solve's checks.
+ *  - timed(n, stress): exactly n DEM steps (explicit dynamics: the macro
+ *    time step over the DEM step), the frame moving to the new F with the
+ *    servo as a continuous feedback. The stresses are the last check's
+ *    (TimedStress::last_check: the state at the new F, which an explicit
+ *    macro step needs, since the mean of c checks lags it by (c - 1)/(2c)
+ *    of a step and a lagged stiffness is negative damping there) or the
+ *    mean over the solve's checks (mean_of_checks, the default).
  *    @pre n is a multiple of the RVE's check interval.
  *  - held(n): the strain held: timed solves of n DEM steps at the same F,
  *    the servo acting at every check, until the RVE is at rest (relaxed
@@ -39,13 +43,25 @@ struct SolveBudget
     timed,
     held
   };
+  /// What a timed solve returns: the mean of its checks' stresses or its last check's.
+  enum class TimedStress
+  {
+    mean_of_checks,
+    last_check
+  };
   Kind kind = Kind::converge;
   long steps = 0;     ///< DEM steps of bounded and timed solves
   long max_steps = 0; ///< a cap beyond which a solve fails (0: the template's 'Step budget')
+  TimedStress timed_stress = TimedStress::mean_of_checks; ///< of timed solves
 
   static SolveBudget converge() { return {}; }
   static SolveBudget bounded(long n) { return make(Kind::bounded, n); }
-  static SolveBudget timed(long n) { return make(Kind::timed, n); }
+  static SolveBudget timed(long n, TimedStress stress = TimedStress::mean_of_checks)
+  {
+    SolveBudget b = make(Kind::timed, n);
+    b.timed_stress = stress;
+    return b;
+  }
   static SolveBudget held(long n) { return make(Kind::held, n); }
 
   /// The step limit of a bounded solve (0: none).

@@ -69,7 +69,11 @@
  * straight path of F plus w, the servo correcting w at every check as a
  * continuous feedback, no convergence stop, the frame at rest after the last
  * check until the next F; P and the stresses are their means over the solve's checks
- * (fix_rve_servo_timed.tpp).
+ * (fix_rve_servo_timed.tpp). `fix_modify ID timed_stress mean|last` (default mean;
+ * not kept in restarts): what a timed solve reports, the mean over its checks (a
+ * box filter, delayed by (c - 1)/(2c) of the solve for c checks) or its last check's,
+ * the state at the new F. An explicit macro step needs last: there a delayed
+ * stiffness feeds energy into the motion (benchmarks/dynamics_filter).
  *
  * The fix integrates every particle itself (do not add fix nve/sphere):
  * inner particles by velocity Verlet with local damping, frame particles by
@@ -214,6 +218,10 @@ public:
    */
   void set_timed_steps(long n);
   long timed_steps() const { return timed_steps_; }
+  /// What a timed solve reports, as `fix_modify ID timed_stress` sets it: the mean of its checks' P and
+  /// stresses (true, the default) or those of its last check (false).
+  void set_timed_mean(bool mean) { timed_mean_ = mean; }
+  bool timed_mean() const { return timed_mean_; }
   Status status() const { return status_; }
   static const char* status_name(Status s);
   const Result& result() const { return result_; }
@@ -430,8 +438,9 @@ private:
   double dtv_ = 0.0, dtf_ = 0.0;
   bool restored_ = false; ///< state came from a restart file
 
-  // timed solves: DEM steps per solve (0: quasi-static) and the box filter's sums
+  // timed solves: DEM steps per solve (0: quasi-static), the mean or the last check, the box filter's sums
   long timed_steps_ = 0;
+  bool timed_mean_ = true;
   int timed_samples_ = 0;
   Tensor timed_P_sum_{}, timed_sigma_sum_{}, timed_sigma_lw_sum_{};
   Tensor timed_F_from_ = fe2dem::identity<dim>(); ///< F at the start of the timed solve

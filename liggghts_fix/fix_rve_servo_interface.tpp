@@ -54,6 +54,16 @@ int FixRveServo<dim>::modify_param(int narg, char** arg)
     set_timed_steps(static_cast<long>(n));
     return 2;
   }
+  if (std::strcmp(arg[0], "timed_stress") == 0)
+  {
+    if (narg < 2)
+      error->fix_error(FLERR, this, "fix_modify keyword 'timed_stress' needs 1 value: mean or last");
+    if (std::strcmp(arg[1], "mean") != 0 && std::strcmp(arg[1], "last") != 0)
+      error->fix_error(FLERR, this, (std::string("fix_modify keyword 'timed_stress': '") + arg[1] +
+                                     "' is neither mean nor last").c_str());
+    set_timed_mean(std::strcmp(arg[1], "mean") == 0);
+    return 2;
+  }
   return 0;
 }
 

@@ -7,9 +7,14 @@
 // retargets the frame, which reaches them, on the mean motion, at the next
 // check (schedule_timed_segment). Without it the frame is an affine
 // boundary, and the RVE is much stiffer (measured: twice the quasi-static
-// shear stress). The stresses returned are the mean
-// over the solve's checks (a box filter over the macro step), so that the
-// DEM's high-frequency noise does not reach the macro solution. With
+// shear stress). The stresses returned are those of the last check, the
+// state at the new F (timed_stress last), or the mean over the solve's
+// checks (mean, the default: a box filter, which the continuous drives of
+// quasi-static solves use). The filter lags the solve's end by (c - 1)/(2c)
+// of it, and in an explicit macro step a lagged stiffness is negative
+// damping: under a volumetric oscillation at 25 kHz one RVE gave back
+// energy with two checks per macro step and dissipated with one (session
+// 45, benchmarks/dynamics_filter). With
 // timed_servo integral (the default) the servo has integral action: under
 // steady loading the balanced fluctuations drift at a steady rate, and a
 // proportional servo follows a drift only with a steady imbalance, a frame
@@ -40,7 +45,8 @@ void FixRveServo<dim>::set_timed_steps(long n)
 }
 
 // At every check of a timed solve: homogenise, add the stresses to the
-// filter; at its last step report their means.
+// filter; at its last step report their means (timed_stress mean) or leave
+// the last check's (last).
 template <int dim>
 void FixRveServo<dim>::timed_check(long step)
 {
@@ -73,10 +79,13 @@ void FixRveServo<dim>::timed_check(long step)
   // steps run before it (no new F) find the frame at rest where this check
   // put it, as after a relaxation solve.
   correct_servo();
-  const double w = 1.0 / timed_samples_;
-  result_.P = w * timed_P_sum_;
-  result_.sigma = w * timed_sigma_sum_;
-  result_.sigma_lw = w * timed_sigma_lw_sum_;
+  if (timed_mean_)
+  {
+    const double w = 1.0 / timed_samples_;
+    result_.P = w * timed_P_sum_;
+    result_.sigma = w * timed_sigma_sum_;
+    result_.sigma_lw = w * timed_sigma_lw_sum_;
+  }
   status_ = converged;
 }
 

@@ -164,7 +164,8 @@ PROBES = {"R = 20 mm, own volume, seed box, 2 us (as problem3_against_r)": "prob
           "... without the seed": "probe_R0.02_own_no_seed",
           "... without C_e (total strain)": "probe_R0.02_own_box_total_strain",
           "... with the averaged volume": "probe_R0.02_averaged_box",
-          "... at 1 us": "probe_R0.02_own_box_dt1us"}
+          "... at 1 us": "probe_R0.02_own_box_dt1us",
+          "as run, 2 us, with the last check's stress (session 45's build)": "probe_R0.02_own_box_last"}
 BACKWARDS = -0.01  # a shear increment below this over the last BAND_ROWS rows: an IP shearing backwards
 # the band's directions in simple shear: along the shear, within 20 degrees of x (the local runs' band
 # is at 4 degrees); among all directions the finder can return a hot spot around the weak RVE

@@ -518,6 +518,9 @@ problem3_hourglass_probe() {
   band_case probe_R0.02_averaged_box "$here/problem3.prm" "$r20; $seed_box; $short"
   band_case probe_R0.02_own_box_total_strain "$here/problem3.prm" "$(problem3_edit 12 10 0.02); $seed_box; $own_volume; $short"
   band_case probe_R0.02_own_box_dt1us "$here/problem3.prm" "$r20; $seed_box; $own_volume; $(time_step_edit 1e-6); $short"
+  # the first case again with session 45's build, which returns each RVE's stress at its step's last
+  # check, not the mean of the step's two checks (same input; the runs above predate it)
+  band_case probe_R0.02_own_box_last "$here/problem3.prm" "$r20; $seed_box; $own_volume; $short"
 }
 # problem3_edit CELLS_X CELLS_Y RADIUS [E]: problem3.prm's substitutions
 problem3_edit() { echo "s/CELLS_X/$1/; s/CELLS_Y/$2/; s/RADIUS/$3/; ${4:+$(local_elastic "$4")}"; }

@@ -94,8 +94,12 @@ CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "p
             for r, radius in ((10, "0.01"), (15, "0.015"), (20, "0.02")) for k in range(1, 3)},
          **{f"R = {r} mm, local elastic 2 MPa, 12x10, seed box, own volume, 1 us step":
             f"problem3_R{radius}_le2_12x10_box_own_dt1us" for r, radius in ((15, "0.015"), (20, "0.02"))},
-         "R = 20 mm, local elastic 2 MPa, 12x10, seed box, own volume, 1 us step, top pressure +1 ppm":
-             "problem3_R0.02_le2_12x10_box_own_dt1us_p1"}
+         **{f"R = {r} mm, local elastic 2 MPa, 12x10, seed box, own volume, 1 us step, top pressure +{k} ppm":
+            f"problem3_R{radius}_le2_12x10_box_own_dt1us_p{k}" for r, radius in ((15, "0.015"), (20, "0.02"))
+            for k in range(1, 4)},
+         # session 45's build: the last check's stress (the runs above at 2 us had the mean of two checks)
+         **{f"R = {r} mm, local elastic 2 MPa, 12x10, seed box, own volume, last check":
+            f"problem3_R{radius}_le2_12x10_box_own_last" for r, radius in ((15, "0.015"), (20, "0.02"))}}
 # the band width against R and the mesh: (R in mm, element height in mm, case)
 # The macro step is fe2dem's default (5 us on 12x5, 2 us on 12x10 and 12x15, 1 us on 12x20) but where the
 # case names it (run.sh problem3_step_cases, problem3_band_cases, problem3_scaled_cases; README,
@@ -153,6 +157,15 @@ R_FAMILIES = {family: {r: (base, tuple(k for k in CASES if k.startswith(base + "
                        for r, base in ((r, f"R = {r:g} mm, local elastic 2 MPa, 12x10, seed box{suffix}")
                                        for r in (10.0, 15.0, 20.0))}
               for family, suffix in (("own volume", ", own volume"), ("averaged volume", ""))}
+# ... and own volume at one check per macro step, where the mean of a step's checks (fe2dem before session
+# 45) and the last check's stress (since) are the same bits: R = 10 mm at 0.2 us (checks of 2), R = 15
+# and 20 mm at 1 us (run.sh problem3_own_half_step, problem3_against_r_half_step)
+R_FAMILIES["own volume, one check per step"] = {
+    r: (base, tuple(k for k in CASES if k.startswith(base + ", top pressure")))
+    for r, base in ((r, f"R = {r:g} mm, local elastic 2 MPa, 12x10, seed box, own volume, {step} step")
+                    for r, step in ((10.0, "0.2 us"), (15.0, "1 us"), (20.0, "1 us")))}
+# the ensembles' macro step, where not fe2dem's default 2 us on 12x10
+FAMILY_STEP = {"own volume, one check per step": "0.2 us at R = 10 mm, 1 us at 15 and 20 mm"}
 APPLIED = 4.16e5  # Pa, the top's vertical stress (problem3.prm)
 # ... and own volume at 1 us, (R in mm, case) (run.sh problem3_own_half_step; R = 10 mm's is CONVERGED[1])
 HALF_STEP = [(10.0, CONVERGED[1]),
@@ -678,7 +691,8 @@ def print_against_r(results, done, name, family, path):
     ensembles = against_r_runs(done, family)
     if len(ensembles) < 2:
         return
-    print(f"\n## the width against R: the 2 us ensembles (12x10, seed box, {name}, C_e of E = 2 MPa)")
+    print(f"\n## the width against R: the {FAMILY_STEP.get(name, '2 us')} ensembles (12x10, seed box, {name}, "
+          "C_e of E = 2 MPa)")
     print_run_header()
     invalid = set()  # the radii with a run whose hourglass share passed 0.1
     for r, members in ensembles.items():

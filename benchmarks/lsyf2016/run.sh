@@ -68,7 +68,7 @@
 #              (session 44; 22 min each)
 #   problem3_against_r_half_step  the own-volume ensembles at R = 15 and 20 mm at 1 us (+1-3 ppm,
 #              beside problem3_own_half_step's runs): the width against R as ensemble means at
-#              a step where they are equilibria (session 45). About 17 min per run alone, 85 min
+#              a step where they are equilibria (session 45). About 17 min per run alone, 85 min in all
 #   problem3_last_check  the own-volume runs at R = 20 and 15 mm on 12x10 at the default 2 us with
 #              session 45's build (the last check's stress): 11 min each alone
 #   problem3_hourglass_probe  the R = 20 mm own-volume case for its first 1 % of shear (two load
@@ -416,9 +416,9 @@ quarter_step="$(time_step_edit 5e-7); $(check_interval_edit 5)"
 # ... and half the step with checks of 5 (session 41, after the quarter step widened the band): is
 # that the step's or the check's?
 check5=$(check_interval_edit 5)
-# the edits of that case (problem3_own_volume's 12x10 case), the base of problem3_converged and
-# problem3_perturbed
-own_12x10() { echo "$(problem3_edit 12 10 0.01 2e6); $seed_box; $own_volume"; }
+# own_12x10 [R]: the edits of that case (problem3_own_volume's 12x10 case) at interaction radius R
+# (default 0.01 m), the base of problem3_converged, problem3_perturbed and the R studies below
+own_12x10() { echo "$(problem3_edit 12 10 "${1:-0.01}" 2e6); $seed_box; $own_volume"; }
 problem3_converged() {
   local own
   own=$(own_12x10)
@@ -462,7 +462,7 @@ problem3_against_r() {
   local k r edit
   for k in 0 1 2 3; do
     for r in 0.015 0.02; do
-      edit="$(problem3_edit 12 10 $r 2e6); $seed_box; $own_volume"
+      edit=$(own_12x10 "$r")
       if [[ $k -eq 0 ]]; then
         band_case "problem3_R${r}_le2_12x10_box_own" "$here/problem3.prm" "$edit"
       else
@@ -491,10 +491,10 @@ problem3_own_half_step() {
   local r
   for r in 0.02 0.015; do
     band_case "problem3_R${r}_le2_12x10_box_own_dt1us" "$here/problem3.prm" \
-      "$(problem3_edit 12 10 $r 2e6); $seed_box; $own_volume; $half_step"
+      "$(own_12x10 "$r"); $half_step"
   done
   band_case problem3_R0.02_le2_12x10_box_own_dt1us_p1 "$here/problem3.prm" \
-    "$(problem3_edit 12 10 0.02 2e6); $seed_box; $own_volume; $half_step; $(top_pressure_edit 1)"
+    "$(own_12x10 0.02); $half_step; $(top_pressure_edit 1)"
 }
 # ... and their ensembles at that step (session 45): R = 15 mm +1-3 ppm and R = 20 mm +2, +3 ppm beside
 # the unperturbed runs and R = 20 mm +1 ppm above, alternating so that, stopped early, both have as
@@ -504,7 +504,7 @@ problem3_against_r_half_step() {
   for k in 1 2 3; do
     for r in 0.015 0.02; do
       [[ $r == 0.02 && $k -eq 1 ]] && continue
-      edit="$(problem3_edit 12 10 $r 2e6); $seed_box; $own_volume; $half_step; $(top_pressure_edit $k)"
+      edit="$(own_12x10 "$r"); $half_step; $(top_pressure_edit $k)"
       band_case "problem3_R${r}_le2_12x10_box_own_dt1us_p$k" "$here/problem3.prm" "$edit"
     done
   done
@@ -514,7 +514,7 @@ problem3_against_r_half_step() {
 problem3_last_check() {
   local r
   for r in 0.02 0.015; do
-    band_case "problem3_R${r}_le2_12x10_box_own_last" "$here/problem3.prm" "$(problem3_edit 12 10 $r 2e6); $seed_box; $own_volume"
+    band_case "problem3_R${r}_le2_12x10_box_own_last" "$here/problem3.prm" "$(own_12x10 "$r")"
   done
 }
 # ... and that case's first 1 % of shear (two load steps at the same rate), one ingredient changed at a

@@ -158,7 +158,7 @@ void CentralDifferenceAnalysis<dim>::prepare_material()
   // The RVEs' stresses at the step's end, at the F of u_n, not the mean of the step's checks: that mean
   // lags by (c - 1)/(2c) of a step for c checks, and central differences with a lagged stiffness gain
   // energy (one RVE under a 25 kHz volumetric oscillation at 2 us: -3.3e-8 J per cycle with the mean
-  // of 2 checks, +3.4e-8 J with the last; benchmarks/dynamics_filter, session 45)
+  // of 2 checks, +3.2e-8 to +3.5e-8 J with the last; benchmarks/dynamics_filter, session 45)
   if (dem_steps_per_macro_step_ > 0)
     system_.material().set_budget(SolveBudget::timed(dem_steps_per_macro_step_, SolveBudget::TimedStress::last_check));
 }

@@ -99,7 +99,10 @@ CASES = {"local": "problem3_R0", "R = 15 mm": "problem3_R0.015", "R = 25 mm": "p
             for k in range(1, 4)},
          # session 45's build: the last check's stress (the runs above at 2 us had the mean of two checks)
          **{f"R = {r} mm, local elastic 2 MPa, 12x10, seed box, own volume, last check":
-            f"problem3_R{radius}_le2_12x10_box_own_last" for r, radius in ((15, "0.015"), (20, "0.02"))}}
+            f"problem3_R{radius}_le2_12x10_box_own_last" for r, radius in ((15, "0.015"), (20, "0.02"))},
+         # ... and at half the rate (session 46, run.sh problem3_half_rate)
+         **{f"R = {r} mm, local elastic 2 MPa, 12x10, seed box, own volume, last check, 2 /s":
+            f"problem3_R{radius}_le2_12x10_box_own_last_rate2" for r, radius in ((15, "0.015"), (20, "0.02"))}}
 # the band width against R and the mesh: (R in mm, element height in mm, case)
 # The macro step is fe2dem's default (5 us on 12x5, 2 us on 12x10 and 12x15, 1 us on 12x20) but where the
 # case names it (run.sh problem3_step_cases, problem3_band_cases, problem3_scaled_cases; README,
@@ -171,6 +174,10 @@ APPLIED = 4.16e5  # Pa, the top's vertical stress (problem3.prm)
 HALF_STEP = [(10.0, CONVERGED[1]),
              *((r, f"R = {r:g} mm, local elastic 2 MPa, 12x10, seed box, own volume, 1 us step") for r in (15.0, 20.0)),
              (20.0, "R = 20 mm, local elastic 2 MPa, 12x10, seed box, own volume, 1 us step, top pressure +1 ppm")]
+# ... and own volume at the default 2 us with the last check's stress (session 45's build), at 4 and 2 /s
+# (run.sh problem3_last_check, problem3_half_rate): (R in mm, case, label)
+LAST_CHECK = [(r, f"R = {r:g} mm, local elastic 2 MPa, 12x10, seed box, own volume, last check{suffix}", label)
+              for r in (15.0, 20.0) for suffix, label in (("", "2 us, 4 /s"), (", 2 /s", "2 us, 2 /s"))]
 # the R = 20 mm own-volume case for its first 1 % of shear, one ingredient changed at a time (run.sh
 # problem3_hourglass_probe; two rows, so not in CASES): {label: directory}
 PROBES = {"R = 20 mm, own volume, seed box, 2 us (as problem3_against_r)": "probe_R0.02_own_box",
@@ -680,6 +687,31 @@ def print_half_step(results, done):
         print_run_row(results, k, done[k], r, k.split(", ")[-1] if "ppm" in k else "unperturbed")
 
 
+def print_last_check(results, done):
+    """The own-volume runs at the default 2 us with the last check's stress, at 4 and 2 /s
+    (LAST_CHECK), in print_run_row's table, each radius beside its ensemble at one check per step
+    (R_FAMILIES["own volume, one check per step"]): that ensemble's range and mean of tau/p at 8 % and
+    of the end width (elements' F) over the last 2 BAND_ROWS rows, what a single run is a draw from."""
+    runs = [(r, k, label) for r, k, label in LAST_CHECK if k in done]
+    if not runs:
+        return
+    print("\n## the own-volume case at the default 2 us with the last check's stress (session 45's build), "
+          "at 4 and 2 /s, beside the 1 us ensembles (12x10, seed box, C_e of E = 2 MPa)")
+    print_run_header()
+    for r, k, label in runs:
+        print_run_row(results, k, done[k], r, label)
+    for r in sorted({r for r, _, _ in runs}):
+        base, perturbed = R_FAMILIES["own volume, one check per step"][r]
+        members = [k for k in (base, *perturbed) if k in done]
+        if not members:
+            continue
+        tp = np.array([curve(done[k])[1][-1] for k in members])
+        w8 = 1e3 * np.array([profile(results, k, "F", -1, 2 * BAND_ROWS)[0] for k in members])
+        print(f"- R = {r:g} mm, the {len(members)} runs at 1 us: tau/p at 8 % {tp.min():.3f}-{tp.max():.3f} "
+              f"(mean {tp.mean():.4f}), width over the last {2 * BAND_ROWS} rows (elements' F) "
+              f"{w8.min():.1f}-{w8.max():.1f} mm (mean {w8.mean():.1f})")
+
+
 def print_against_r(results, done, name, family, path):
     """The band's width against R from the ensembles of @p family (R_FAMILIES[@p name];
     against_r_runs): each run's tau/p at 8 %, weak RVEs' pressure, hourglass share (energy_shares())
@@ -864,6 +896,7 @@ def main():
         png = "problem3_against_r.png" if name == "own volume" else f"problem3_against_r_{name.split()[0]}.png"
         print_against_r(results, done, name, family, os.path.join(results, png))
     print_half_step(results, done)
+    print_last_check(results, done)
     print_equilibrium(results, done)
     print_probes(results)
     with open(os.path.join(results, "problem3.csv"), "w", newline="") as f:

@@ -71,6 +71,8 @@
 #              a step where they are equilibria (session 45). About 17 min per run alone, 85 min in all
 #   problem3_last_check  the own-volume runs at R = 20 and 15 mm on 12x10 at the default 2 us with
 #              session 45's build (the last check's stress): 11 min each alone
+#   problem3_half_rate  the same two runs at half the rate (2 /s): is the width at 4 /s the
+#              quasi-static one at these radii? (session 46; 22 min each alone)
 #   problem3_hourglass_probe  the R = 20 mm own-volume case for its first 1 % of shear (two load
 #              steps) without the seed, without C_e, with the averaged volume and at 1 us: which of
 #              them makes the hourglass forces do the work (session 44; 1.5-3 min each)
@@ -93,7 +95,7 @@
 # Each case in results/CASE/ (the parameter file, log, outputs); a case whose
 # result exists and whose parameter file is unchanged is not run again.
 #
-#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem3_fixed_r|problem3_own_volume|problem3_converged|problem3_perturbed|problem3_fine_step|problem3_against_r|problem3_against_r_averaged|problem3_own_half_step|problem3_against_r_half_step|problem3_last_check|problem3_hourglass_probe|problem4|problem4_rates|macro_step|cv_shear|tables|all [--full]
+#   run.sh BUILD wave|problem1|problem1_ensemble|modulus|problem3|problem3_band|problem3_scaled|problem3_fixed_r|problem3_own_volume|problem3_converged|problem3_perturbed|problem3_fine_step|problem3_against_r|problem3_against_r_averaged|problem3_own_half_step|problem3_against_r_half_step|problem3_last_check|problem3_half_rate|problem3_hourglass_probe|problem4|problem4_rates|macro_step|cv_shear|tables|all [--full]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -517,6 +519,13 @@ problem3_last_check() {
     band_case "problem3_R${r}_le2_12x10_box_own_last" "$here/problem3.prm" "$(own_12x10 "$r")"
   done
 }
+# ... and at half the rate (2 /s, to 8 % in 40 ms, twice the DEM steps) with that build (session 46)
+problem3_half_rate() {
+  local r
+  for r in 0.02 0.015; do
+    band_case "problem3_R${r}_le2_12x10_box_own_last_rate2" "$here/problem3.prm" "$(own_12x10 "$r"); $half_rate"
+  done
+}
 # ... and that case's first 1 % of shear (two load steps at the same rate), one ingredient changed at a
 # time: the seed removed, C_e removed (total strain), the averaged volume, half the step
 problem3_hourglass_probe() {
@@ -595,6 +604,7 @@ problem3() {
   problem3_own_half_step
   problem3_against_r_half_step
   problem3_last_check
+  problem3_half_rate
   problem3_hourglass_probe
   problem3_table
 }
@@ -690,6 +700,7 @@ case "$what" in
   problem3_own_half_step) problem3_own_half_step; problem3_table ;;
   problem3_against_r_half_step) problem3_against_r_half_step; problem3_table ;;
   problem3_last_check) problem3_last_check; problem3_table ;;
+  problem3_half_rate) problem3_half_rate; problem3_table ;;
   problem3_hourglass_probe) problem3_hourglass_probe; problem3_table ;;
   problem4) if [[ -n $full ]]; then problem4_full; else problem4; fi ;;
   problem4_rates) problem4_rates ;;

@@ -17,6 +17,10 @@
 #                                         _half, _quarter (also mesh_MESH_half...):
 #                                         stage 2 in 0.25 / 0.125 % steps (not in 'all'; README,
 #                                         "Local against nonlocal")
+#   ..._pK (after every other part, e.g.  the lateral pressure 1.5e5 (1 + K 1e-6) N/m:
+#   nonlocal_4x8_le_quarter_p1)           an ensemble member that differs from the
+#                                         case in the sixth digit of one load
+#                                         (ensemble_study.py; not in 'all')
 #   mesh_4x8_steps22                      4x8 with stage 2 in 0.25 % steps to
 #                                         5.5 % (load-step check of the peak)
 #   dns_A dns_B                           direct numerical simulations
@@ -56,8 +60,8 @@ while [[ $# -gt 0 ]]; do
     --mts20) mts20=1; shift ;;
     all) cases+=("${all_cases[@]}"); shift ;;
     -h|--help) usage ;;
-    *) [[ " ${all_cases[*]} " == *" $1 "* || $1 =~ ^(mesh|nonlocal)_(1x1|1x2|2x4|4x8|8x16)(_op)?(_R[0-9.]+)?(_a[0-9.]+)?(_le[0-9.e]*)?(_half|_quarter)?$ ]] ||
-         { echo "run.sh: unknown case '$1' (cases: ${all_cases[*]}, mesh_MESH[_op], nonlocal_MESH[_op][_RN][_aA][_le[E]][_half|_quarter], all)" >&2; exit 2; }
+    *) [[ " ${all_cases[*]} " == *" $1 "* || $1 =~ ^(mesh|nonlocal)_(1x1|1x2|2x4|4x8|8x16)(_op)?(_R[0-9.]+)?(_a[0-9.]+)?(_le[0-9.e]*)?(_half|_quarter)?(_p[1-9][0-9]*)?$ ]] ||
+         { echo "run.sh: unknown case '$1' (cases: ${all_cases[*]}, mesh_MESH[_op], nonlocal_MESH[_op][_RN][_aA][_le[E]][_half|_quarter][_pK], all)" >&2; exit 2; }
        cases+=("$1"); shift ;;
   esac
 done
@@ -80,8 +84,12 @@ overrides() {
       printf 'subsection Geometry\n  set Cells x = %s\n  set Cells y = %s\nend\n' "${cells%x*}" "${cells#*x}"
       [[ $1 != *_steps22 ]] || printf 'subsection Loading\n  set Load steps = 22\n  set Axial strain = 0.055\nend\n'
       # _half, _quarter: stage 2 in 0.25 % and 0.125 % steps (the load-step check of a whole curve)
-      [[ $1 != *_half ]] || printf 'subsection Loading\n  set Load steps = 40\nend\n'
-      [[ $1 != *_quarter ]] || printf 'subsection Loading\n  set Load steps = 80\nend\n' ;;
+      [[ $1 != *_half* ]] || printf 'subsection Loading\n  set Load steps = 40\nend\n'
+      [[ $1 != *_quarter* ]] || printf 'subsection Loading\n  set Load steps = 80\nend\n'
+      # _pK: the lateral pressure 1 + K ppm higher, an ensemble member (the curves after the peak
+      # part by rounding alone: README, "The band width over three meshes, and what rounding does")
+      [[ ! $1 =~ _p([0-9]+)$ ]] ||
+        printf 'subsection Loading\n  set Pressure = %s\nend\n' "$(awk -v k="${BASH_REMATCH[1]}" 'BEGIN { printf "%.3f", 1.5e5 * (1 + k * 1e-6) }')" ;;
     mu*) printf 'subsection RVE\n  set Friction = %s\nend\n' "${1#mu}" ;;
     locked) printf 'subsection RVE\n  set Rotation = locked\nend\n' ;;
     a005|a008) printf 'subsection RVE\n  set Packing = ../../rve_templates/packings/lbs_%s\nend\n' "$1" ;;

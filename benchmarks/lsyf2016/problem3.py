@@ -774,7 +774,7 @@ def print_against_r(results, done, name, family, path):
             m, se = v.mean(axis=0), v.std(axis=0, ddof=1) / np.sqrt(len(v))
             cells.append(f"{m[0]:.4f} +- {se[0]:.4f} / {m[1]:.4f} +- {se[1]:.4f}")
         print(f"| {r:g} | {len(members)} | {min(n_in)}-{max(n_in)} of {len(gamma)} | " + " | ".join(cells) + " |")
-    plot_against_r(results, ensembles, widths, invalid, f"{name}, 2 us", path)
+    plot_against_r(results, ensembles, widths, invalid, f"{name}, {FAMILY_STEP.get(name, '2 us')}", path)
 
 
 def plot_against_r(results, ensembles, widths, invalid, title, path):

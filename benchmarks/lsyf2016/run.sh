@@ -562,6 +562,16 @@ problem3_full() {
     read -r name x y radius modulus <<< "$c"
     submit_full "$name" "$here/problem3.prm" "$(problem3_edit "$x" "$y" "$radius" "$modulus")"
   done
+  # ... and the width against R as this machine measures it (session 46): 12x10, the seed box, own
+  # volume, C_e of E = 2 MPa, R = 10, 15, 20 mm, each unperturbed and with the top's pressure +1-3 ppm,
+  # at fe2dem's default step (the last check's stress since session 45)
+  local k r
+  for r in 0.01 0.015 0.02; do
+    submit_full "problem3_R${r}_le2_12x10_box_own" "$here/problem3.prm" "$(own_12x10 "$r")"
+    for k in 1 2 3; do
+      submit_full "problem3_R${r}_le2_12x10_box_own_p$k" "$here/problem3.prm" "$(own_12x10 "$r"); $(top_pressure_edit $k)"
+    done
+  done
 }
 problem4_full() {
   local c name x y radius

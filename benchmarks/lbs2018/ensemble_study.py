@@ -32,7 +32,6 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import analyse  # noqa: E402  (curve(): the study's reading of summary.csv)
 from nonlocal_study import spread_after_peak  # noqa: E402
 
-here = os.path.dirname(os.path.abspath(__file__))
 CURVES = os.path.join(analyse.results, "ensemble_curves.csv")
 MESHES = [("2x4", "2x4"), ("4x8", "4x8"), ("8x16, one point", "8x16_op")]  # label, run.sh's mesh part
 FAMILIES = [("local", "mesh", ""), ("local elastic R = 2.5 mm", "nonlocal", "_le")]  # label, prefix, suffix

@@ -70,9 +70,9 @@
 #              beside problem3_own_half_step's runs): the width against R as ensemble means at
 #              a step where they are equilibria (session 45). About 17 min per run alone, 85 min in all
 #   problem3_last_check  the own-volume runs at R = 20 and 15 mm on 12x10 at the default 2 us with
-#              session 45's build (the last check's stress): 11 min each alone
+#              session 45's build (the last check's stress): 18-19 min each alone (measured)
 #   problem3_half_rate  the same two runs at half the rate (2 /s): is the width at 4 /s the
-#              quasi-static one at these radii? (session 46; 22 min each alone)
+#              quasi-static one at these radii? (session 46; 35-37 min each alone)
 #   problem3_hourglass_probe  the R = 20 mm own-volume case for its first 1 % of shear (two load
 #              steps) without the seed, without C_e, with the averaged volume and at 1 us: which of
 #              them makes the hourglass forces do the work (session 44; 1.5-3 min each)

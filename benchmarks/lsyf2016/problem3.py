@@ -700,11 +700,9 @@ def print_last_check(results, done):
     print_run_header()
     for r, k, label in runs:
         print_run_row(results, k, done[k], r, label)
-    for r in sorted({r for r, _, _ in runs}):
-        base, perturbed = R_FAMILIES["own volume, one check per step"][r]
-        members = [k for k in (base, *perturbed) if k in done]
-        if not members:
-            continue
+    ensembles = against_r_runs(done, R_FAMILIES["own volume, one check per step"])
+    for r in sorted({r for r, _, _ in runs} & ensembles.keys()):
+        members = ensembles[r]
         tp = np.array([curve(done[k])[1][-1] for k in members])
         w8 = 1e3 * np.array([profile(results, k, "F", -1, 2 * BAND_ROWS)[0] for k in members])
         print(f"- R = {r:g} mm, the {len(members)} runs at 1 us: tau/p at 8 % {tp.min():.3f}-{tp.max():.3f} "

@@ -47,8 +47,9 @@ def case_name(family, mesh, k):
 
 
 def stored_curves():
-    """{case: {axial_strain, stress_ratio}} of every member: CURVES, updated with the members that
-    runs/ holds (and written back, so that a partial runs/ never drops a stored member)."""
+    """{case: {axial_strain, stress_ratio}} of every member: CURVES, updated with the finished
+    members that runs/ holds (and written back, so that a partial runs/ never drops a stored
+    member)."""
     out = {}
     if os.path.exists(CURVES):
         for r in csv.DictReader(open(CURVES)):
@@ -56,7 +57,9 @@ def stored_curves():
             v["axial_strain"].append(float(r["axial_strain"]))
             v["stress_ratio"].append(float(r["stress_ratio"]))
     names = [case_name(f, m, k) for f in FAMILIES for m, _ in MESHES for k in MEMBERS]
-    ran = {c: v for c, v in ((c, analyse.curve(c)) for c in names) if v}
+    # Only runs that reached 10 %: a run still under way must not be stored as a member.
+    ran = {c: v for c, v in ((c, analyse.curve(c)) for c in names)
+           if v and abs(v["axial_strain"][-1] - 0.10) < 1e-6}
     if ran:
         out.update({c: {k: ran[c][k] for k in ("axial_strain", "stress_ratio")} for c in ran})
         with open(CURVES, "w", newline="") as fh:

@@ -20,7 +20,8 @@ with the members in runs/CASE[_pK]/summary.csv (run.sh), and prints:
   family's mean curve to 10 %: mean and largest, and from 7.5 % on;
 - per mesh the members' own spread (max - min over mean at each step, from
   the peak of their mean): what one mesh scatters by, the noise under a
-  single-run spread.
+  single-run spread;
+- every member's peak (ratio and axial strain) and its ratio at 10 %.
 """
 import csv
 import os
@@ -114,6 +115,17 @@ def main():
             pts, _ = spread_after_peak(curves, cases)
             e, s = np.array(pts).T
             print(f"| {fam[0]} | {m} | {len(cases)} | {100 * s.mean():.3g} % | {100 * s.max():.3g} % |")
+
+    print("\n| family | mesh | member K | peak | at | ratio at 10 % |\n" + "|---" * 6 + "|")
+    for fam in FAMILIES:
+        for m, _ in MESHES:
+            for k in MEMBERS:
+                c = case_name(fam, m, k)
+                if finished(curves, c):
+                    r = curves[c]["stress_ratio"]
+                    i = int(np.argmax(r))
+                    print(f"| {fam[0]} | {m} | {k} | {r[i]:.4f} | {100 * curves[c]['axial_strain'][i]:.4g} % "
+                          f"| {r[-1]:.3f} |")
     return 0
 
 

@@ -17,7 +17,8 @@ that the tables regenerate without runs/, which is not committed), updates it
 with the members in runs/CASE[_pK]/summary.csv (run.sh), and prints:
 - per family and member K the single-run spread over the meshes (every mesh's
   member K), beside the spread of the ensemble means, from the peak of the
-  family's mean curve to 10 %: mean and largest, and from 7.5 % on;
+  family's mean curve to 10 %: mean and largest, and from 7.5 % on; over the
+  three meshes, and over 2x4 and 4x8 alone (session 30's pair);
 - per mesh the members' own spread (max - min over mean at each step, from
   the peak of their mean): what one mesh scatters by, the noise under a
   single-run spread;
@@ -85,26 +86,30 @@ def summary(pts):
     return e[0], s.mean(), s.max(), late.mean(), late.max()
 
 
+def print_spread_over(curves, meshes):
+    """The first table's rows for the meshes labelled @p meshes: every member K that all of them
+    finished (its single-run spread over them) and, with two such members or more, the spread
+    over them of their ensemble means."""
+    for fam in FAMILIES:
+        members = [k for k in MEMBERS if all(finished(curves, case_name(fam, m, k)) for m in meshes)]
+        rows = [(f"member K = {k}", {m: curves[case_name(fam, m, k)] for m in meshes}) for k in members]
+        if len(members) >= 2:
+            means = {m: {"axial_strain": curves[case_name(fam, m, members[0])]["axial_strain"],
+                         "stress_ratio": list(np.mean([curves[case_name(fam, m, k)]["stress_ratio"]
+                                                       for k in members], axis=0))} for m in meshes}
+            rows.append((f"ensemble means of K = {', '.join(map(str, members))}", means))
+        for label, by_mesh in rows:
+            pts, _ = spread_after_peak(by_mesh, list(meshes))
+            print(f"| {fam[0]} | {', '.join(meshes)} | {label} | "
+                  + " | ".join(f"{100 * v:.3g} %" for v in summary(pts)) + " |")
+
+
 def main():
     curves = stored_curves()
-    print(f"\n| family | curves | peak of the mean at | spread after it: mean | largest | "
-          f"from {100 * LATE:g} %: mean | largest |\n" + "|---" * 7 + "|")
-    for fam in FAMILIES:
-        members = [k for k in MEMBERS if all(finished(curves, case_name(fam, m, k)) for m, _ in MESHES)]
-        for k in members:
-            cases = [case_name(fam, m, k) for m, _ in MESHES]
-            pts, _ = spread_after_peak(curves, cases)
-            print(f"| {fam[0]} | member K = {k} | " + " | ".join(f"{100 * v:.3g} %" for v in summary(pts)) + " |")
-        if len(members) < 2:
-            continue
-        means = {}
-        for m, _ in MESHES:
-            r = np.array([curves[case_name(fam, m, k)]["stress_ratio"] for k in members])
-            means[m] = {"axial_strain": curves[case_name(fam, m, members[0])]["axial_strain"],
-                        "stress_ratio": list(r.mean(axis=0))}
-        pts, _ = spread_after_peak(means, [m for m, _ in MESHES])
-        print(f"| {fam[0]} | ensemble means of K = {', '.join(map(str, members))} | "
-              + " | ".join(f"{100 * v:.3g} %" for v in summary(pts)) + " |")
+    print(f"\n| family | meshes | curves | peak of the mean at | spread after it: mean | largest | "
+          f"from {100 * LATE:g} %: mean | largest |\n" + "|---" * 8 + "|")
+    print_spread_over(curves, [m for m, _ in MESHES])
+    print_spread_over(curves, [m for m, _ in MESHES[:2]])  # 2x4, 4x8: session 30's pair of meshes
 
     print("\n| family | mesh | members | their spread after the peak of their mean: mean | largest |\n" + "|---" * 5 + "|")
     for fam in FAMILIES:

@@ -111,7 +111,8 @@ def main():
     print_spread_over(curves, [m for m, _ in MESHES])
     print_spread_over(curves, [m for m, _ in MESHES[:2]])  # 2x4, 4x8: session 30's pair of meshes
 
-    print("\n| family | mesh | members | their spread after the peak of their mean: mean | largest |\n" + "|---" * 5 + "|")
+    print("\n| family | mesh | members | their spread after the peak of their mean: mean | largest |\n"
+          + "|---" * 5 + "|")
     for fam in FAMILIES:
         for m, _ in MESHES:
             cases = [case_name(fam, m, k) for k in MEMBERS if finished(curves, case_name(fam, m, k))]

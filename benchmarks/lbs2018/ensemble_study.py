@@ -22,13 +22,19 @@ with the members in runs/CASE[_pK]/summary.csv (run.sh), and prints:
 - per mesh the members' own spread (max - min over mean at each step, from
   the peak of their mean): what one mesh scatters by, the noise under a
   single-run spread;
-- every member's peak (ratio and axial strain) and its ratio at 10 %.
+- every member's peak (ratio and axial strain) and its ratio at 10 %;
+and draws results/ensemble_curves.png: per family every finished member
+(thin) and each mesh's mean of two or more members (thick), from 4 %.
 """
 import csv
 import os
 import sys
 
+import matplotlib
 import numpy as np
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import analyse  # noqa: E402  (curve(): the study's reading of summary.csv)
@@ -104,8 +110,36 @@ def print_spread_over(curves, meshes):
                   + " | ".join(f"{100 * v:.3g} %" for v in summary(pts)) + " |")
 
 
+def plot(curves):
+    """results/ensemble_curves.png: the members and their means, one panel per family."""
+    fig, axs = plt.subplots(1, len(FAMILIES), figsize=(12, 4.5), sharey=True)
+    for ax, fam in zip(axs, FAMILIES):
+        for (m, _), colour in zip(MESHES, ("tab:blue", "tab:orange", "tab:green")):
+            done = [case_name(fam, m, k) for k in MEMBERS if finished(curves, case_name(fam, m, k))]
+            for c in done:
+                ax.plot(100 * np.array(curves[c]["axial_strain"]), curves[c]["stress_ratio"], color=colour,
+                        lw=0.7, alpha=0.6)
+            if len(done) >= 2:
+                ax.plot(100 * np.array(curves[done[0]]["axial_strain"]),
+                        np.mean([curves[c]["stress_ratio"] for c in done], axis=0), color=colour, lw=2.2,
+                        label=f"{m}: mean of {len(done)}")
+            elif done:
+                ax.lines[-1].set_label(f"{m}: one member")
+        ax.set_xlim(4, 10)
+        ax.set_ylim(0.24, 0.43)
+        ax.set_title(fam[0])
+        ax.set_xlabel("axial strain (%)")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    axs[0].set_ylabel("stress ratio (σ1 − σ2)/(σ1 + σ2)")
+    fig.suptitle("[LBS] biaxial, 0.125 % steps: ensemble members (lateral pressure +K ppm) and their means")
+    fig.tight_layout()
+    fig.savefig(os.path.join(analyse.results, "ensemble_curves.png"), dpi=120)
+
+
 def main():
     curves = stored_curves()
+    plot(curves)
     print(f"\n| family | meshes | curves | peak of the mean at | spread after it: mean | largest | "
           f"from {100 * LATE:g} %: mean | largest |\n" + "|---" * 8 + "|")
     print_spread_over(curves, [m for m, _ in MESHES])

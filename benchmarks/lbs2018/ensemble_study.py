@@ -66,8 +66,7 @@ def stored_curves():
             v["stress_ratio"].append(float(r["stress_ratio"]))
     names = [case_name(f, m, k) for f in FAMILIES for m, _ in MESHES for k in MEMBERS]
     # Only runs that reached 10 %: a run still under way must not be stored as a member.
-    ran = {c: v for c, v in ((c, analyse.curve(c)) for c in names)
-           if v and abs(v["axial_strain"][-1] - 0.10) < 1e-6}
+    ran = {c: v for c, v in ((c, analyse.curve(c)) for c in names) if v and reached_end(v)}
     if ran:
         out.update({c: {k: ran[c][k] for k in ("axial_strain", "stress_ratio")} for c in ran})
         with open(CURVES, "w", newline="") as fh:
@@ -80,9 +79,25 @@ def stored_curves():
     return out
 
 
+def reached_end(curve):
+    """Whether @p curve (analyse.curve's dict) reached 10 % axial strain."""
+    return abs(curve["axial_strain"][-1] - 0.10) < 1e-6
+
+
 def finished(curves, c):
     """Whether case @p c reached 10 % axial strain."""
-    return c in curves and abs(curves[c]["axial_strain"][-1] - 0.10) < 1e-6
+    return c in curves and reached_end(curves[c])
+
+
+def finished_members(curves, fam, mesh):
+    """The cases of @p fam's members on @p mesh that reached 10 %, in the order of MEMBERS."""
+    return [case_name(fam, mesh, k) for k in MEMBERS if finished(curves, case_name(fam, mesh, k))]
+
+
+def mean_curve(curves, cases):
+    """{axial_strain, stress_ratio}: the mean over @p cases, which share their rows (the same steps)."""
+    return {"axial_strain": curves[cases[0]]["axial_strain"],
+            "stress_ratio": list(np.mean([curves[c]["stress_ratio"] for c in cases], axis=0))}
 
 
 def summary(pts):
@@ -100,9 +115,7 @@ def print_spread_over(curves, meshes):
         members = [k for k in MEMBERS if all(finished(curves, case_name(fam, m, k)) for m in meshes)]
         rows = [(f"member K = {k}", {m: curves[case_name(fam, m, k)] for m in meshes}) for k in members]
         if len(members) >= 2:
-            means = {m: {"axial_strain": curves[case_name(fam, m, members[0])]["axial_strain"],
-                         "stress_ratio": list(np.mean([curves[case_name(fam, m, k)]["stress_ratio"]
-                                                       for k in members], axis=0))} for m in meshes}
+            means = {m: mean_curve(curves, [case_name(fam, m, k) for k in members]) for m in meshes}
             rows.append((f"ensemble means of K = {', '.join(map(str, members))}", means))
         for label, by_mesh in rows:
             pts, _ = spread_after_peak(by_mesh, list(meshes))
@@ -115,13 +128,13 @@ def plot(curves):
     fig, axs = plt.subplots(1, len(FAMILIES), figsize=(12, 4.5), sharey=True)
     for ax, fam in zip(axs, FAMILIES):
         for (m, _), colour in zip(MESHES, ("tab:blue", "tab:orange", "tab:green")):
-            done = [case_name(fam, m, k) for k in MEMBERS if finished(curves, case_name(fam, m, k))]
+            done = finished_members(curves, fam, m)
             for c in done:
                 ax.plot(100 * np.array(curves[c]["axial_strain"]), curves[c]["stress_ratio"], color=colour,
                         lw=0.7, alpha=0.6)
             if len(done) >= 2:
-                ax.plot(100 * np.array(curves[done[0]]["axial_strain"]),
-                        np.mean([curves[c]["stress_ratio"] for c in done], axis=0), color=colour, lw=2.2,
+                mean = mean_curve(curves, done)
+                ax.plot(100 * np.array(mean["axial_strain"]), mean["stress_ratio"], color=colour, lw=2.2,
                         label=f"{m}: mean of {len(done)}")
             elif done:
                 ax.lines[-1].set_label(f"{m}: one member")
@@ -149,7 +162,7 @@ def main():
           + "|---" * 5 + "|")
     for fam in FAMILIES:
         for m, _ in MESHES:
-            cases = [case_name(fam, m, k) for k in MEMBERS if finished(curves, case_name(fam, m, k))]
+            cases = finished_members(curves, fam, m)
             if len(cases) < 2:
                 continue
             pts, _ = spread_after_peak(curves, cases)

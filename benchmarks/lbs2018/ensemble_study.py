@@ -23,6 +23,9 @@ with the members in runs/CASE[_pK]/summary.csv (run.sh), and prints:
   the peak of their mean): what one mesh scatters by, the noise under a
   single-run spread;
 - every member's peak (ratio and axial strain) and its ratio at 10 %;
+- per mesh the members' band widths (band_study.py's half-share width and inclined FWHM of the
+  shear strain increment over 7.5-10 % and 9-10 %), each and their mean and standard deviation,
+  stored in results/ensemble_widths.csv (computed from runs/CASE/history.h5, kept without it);
 and draws results/ensemble_curves.png: per family every finished member
 (thin) and each mesh's mean of two or more members (thick), from 4 %.
 """
@@ -38,9 +41,13 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import analyse  # noqa: E402  (curve(): the study's reading of summary.csv)
+import band_study  # noqa: E402  (the band width of one run over an interval)
+import band_width as bw  # noqa: E402
 from nonlocal_study import spread_after_peak  # noqa: E402
 
 CURVES = os.path.join(analyse.results, "ensemble_curves.csv")
+WIDTHS = os.path.join(analyse.results, "ensemble_widths.csv")
+ELEMENT_MM = {"2x4": 5.0, "4x8": 2.5, "8x16, one point": 1.25}
 MESHES = [("2x4", "2x4"), ("4x8", "4x8"), ("8x16, one point", "8x16_op")]  # label, run.sh's mesh part
 FAMILIES = [("local", "mesh", ""), ("local elastic R = 2.5 mm", "nonlocal", "_le")]  # label, prefix, suffix
 MEMBERS = (0, 1, 2)  # K: the lateral pressure 1.5e5 (1 + K 1e-6) N/m (run.sh _pK); K = 0 the case itself
@@ -77,6 +84,68 @@ def stored_curves():
     if not out:
         sys.exit(f"ensemble_study.py: no member in runs/ and no {CURVES} (run.sh CASE_pK ...)")
     return out
+
+
+def member_widths(case):
+    """{(from, to): (half-share width, inclined FWHM)} in m of @p case's shear strain increment
+    (band_study.py's measures; the FWHM is nan where the profile does not fall to half on both
+    sides)."""
+    eps, ratio, _ = band_study.stage2(case)
+    coulomb = bw.coulomb_angle(ratio.max())
+    out = {}
+    for a, b in band_study.INTERVALS:
+        pts, g = band_study.increment(case, a, b)
+        out[(a, b)] = (bw.half_share_width(g, band_study.HEIGHT, coulomb),
+                       bw.band_width(pts, g, band_angles=bw.INCLINED)[0])
+    return out
+
+
+def stored_widths(curves):
+    """{case: member_widths(case)} of every finished member: WIDTHS, updated with the members
+    whose history.h5 runs/ holds (and written back)."""
+    out = {}
+    if os.path.exists(WIDTHS):
+        for r in csv.DictReader(open(WIDTHS)):
+            out.setdefault(r["case"], {})[(float(r["from"]), float(r["to"]))] = (
+                float(r["half_share_width_m"]), float(r["fwhm_inclined_m"]))
+    names = [case_name(f, m, k) for f in FAMILIES for m, _ in MESHES for k in MEMBERS]
+    fresh = [c for c in names if finished(curves, c)
+             and os.path.exists(os.path.join(band_study.runs, c, "history.h5"))]
+    if fresh:
+        out.update({c: member_widths(c) for c in fresh})
+        with open(WIDTHS, "w", newline="") as fh:
+            w = csv.writer(fh)
+            w.writerow(["case", "from", "to", "half_share_width_m", "fwhm_inclined_m"])
+            for c in sorted(out):
+                w.writerows([c, f"{a:g}", f"{b:g}", f"{h:.6g}", f"{f:.6g}"] for (a, b), (h, f) in sorted(out[c].items()))
+    return out
+
+
+def print_widths(curves, widths):
+    """The members' band widths per mesh, and the spread of the meshes' means per family."""
+    ivs = sorted(band_study.INTERVALS)  # 7.5-10 % first
+    print("\n| family | mesh | element | members | "
+          + " | ".join(f"half share {100 * a:g}-{100 * b:g} %: members (mm) | mean ± sd" for a, b in ivs)
+          + f" | inclined FWHM {100 * ivs[0][0]:g}-{100 * ivs[0][1]:g} % found |\n" + "|---" * (5 + 2 * len(ivs)) + "|")
+    for fam in FAMILIES:
+        means = []
+        for m, _ in MESHES:
+            cases = [c for c in finished_members(curves, fam, m) if c in widths]
+            if not cases:
+                continue
+            cells = []
+            for iv in ivs:
+                v = 1e3 * np.array([widths[c][iv][0] for c in cases])
+                sd = f" ± {v.std(ddof=1):.1f}" if len(v) > 1 else ""
+                cells += [" / ".join(f"{x:.1f}" for x in v), f"{v.mean():.1f}{sd}"]
+                if iv == ivs[0]:
+                    means.append(v.mean())
+            found = sum(not np.isnan(widths[c][ivs[0]][1]) for c in cases)
+            print(f"| {fam[0]} | {m} | {ELEMENT_MM[m]:g} mm | {len(cases)} | " + " | ".join(cells)
+                  + f" | {found} of {len(cases)} |")
+        if len(means) > 1:
+            print(f"| {fam[0]} | range of the means, {100 * ivs[0][0]:g}-{100 * ivs[0][1]:g} % | | | "
+                  f"{max(means) - min(means):.1f} mm |" + " |" * (2 * len(ivs)))
 
 
 def reached_end(curve):
@@ -179,6 +248,8 @@ def main():
                     i = int(np.argmax(r))
                     print(f"| {fam[0]} | {m} | {k} | {r[i]:.4f} | {100 * curves[c]['axial_strain'][i]:.4g} % "
                           f"| {r[-1]:.3f} |")
+
+    print_widths(curves, stored_widths(curves))
     return 0
 
 

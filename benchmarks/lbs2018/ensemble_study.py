@@ -22,7 +22,8 @@ with the members in runs/CASE[_pK]/summary.csv (run.sh), and prints:
 - per mesh the members' own spread (max - min over mean at each step, from
   the peak of their mean): what one mesh scatters by, the noise under a
   single-run spread;
-- every member's peak (ratio and axial strain) and its ratio at 10 %;
+- every member's peak (ratio and axial strain), the first row DROP below it (the onset of
+  softening) and its ratio at 10 %;
 - per mesh the members' band widths (band_study.py's half-share width and inclined FWHM of the
   shear strain increment over 7.5-10 % and 9-10 %), each and their mean and standard deviation,
   stored in results/ensemble_widths.csv (computed from runs/CASE/history.h5, kept without it);
@@ -51,6 +52,7 @@ ELEMENT_MM = {"2x4": 5.0, "4x8": 2.5, "8x16, one point": 1.25}
 MESHES = [("2x4", "2x4"), ("4x8", "4x8"), ("8x16, one point", "8x16_op")]  # label, run.sh's mesh part
 FAMILIES = [("local", "mesh", ""), ("local elastic R = 2.5 mm", "nonlocal", "_le")]  # label, prefix, suffix
 MEMBERS = (0, 1, 2)  # K: the lateral pressure 1.5e5 (1 + K 1e-6) N/m (run.sh _pK); K = 0 the case itself
+DROP = 0.02         # the onset of softening: the first row this far below the curve's peak
 LATE = 0.075         # band_study.py's second interval: every run has dropped by 7.5 %
 
 
@@ -169,6 +171,14 @@ def mean_curve(curves, cases):
             "stress_ratio": list(np.mean([curves[c]["stress_ratio"] for c in cases], axis=0))}
 
 
+def drop_at(curve):
+    """The axial strain of the first row DROP below @p curve's highest ratio up to that row: where it
+    softens, also when a plateau's second maximum is the highest."""
+    r = np.array(curve["stress_ratio"])
+    k = int(np.argmax(r < np.maximum.accumulate(r) - DROP))
+    return curve["axial_strain"][k]
+
+
 def summary(pts):
     """(peak at, mean, largest, mean from LATE, largest from LATE) of spread_after_peak's points."""
     e, s = np.array(pts).T
@@ -238,15 +248,15 @@ def main():
             e, s = np.array(pts).T
             print(f"| {fam[0]} | {m} | {len(cases)} | {100 * s.mean():.3g} % | {100 * s.max():.3g} % |")
 
-    print("\n| family | mesh | member K | peak | at | ratio at 10 % |\n" + "|---" * 6 + "|")
+    print(f"\n| family | mesh | member K | peak | at | {DROP:g} below it at | ratio at 10 % |\n" + "|---" * 7 + "|")
     for fam in FAMILIES:
         for m, _ in MESHES:
             for k in MEMBERS:
                 c = case_name(fam, m, k)
                 if finished(curves, c):
-                    r = curves[c]["stress_ratio"]
+                    r, e = curves[c]["stress_ratio"], curves[c]["axial_strain"]
                     i = int(np.argmax(r))
-                    print(f"| {fam[0]} | {m} | {k} | {r[i]:.4f} | {100 * curves[c]['axial_strain'][i]:.4g} % "
+                    print(f"| {fam[0]} | {m} | {k} | {r[i]:.4f} | {100 * e[i]:.4g} % | {100 * drop_at(curves[c]):.4g} % "
                           f"| {r[-1]:.3f} |")
 
     print_widths(curves, stored_widths(curves))

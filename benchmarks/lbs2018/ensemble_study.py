@@ -176,8 +176,8 @@ def drop_at(curve):
     """The axial strain of the first row DROP below @p curve's highest ratio up to that row: where it
     softens, also when a plateau's second maximum is the highest."""
     r = np.array(curve["stress_ratio"])
-    k = int(np.argmax(r < np.maximum.accumulate(r) - DROP))
-    return curve["axial_strain"][k]
+    below = r < np.maximum.accumulate(r) - DROP
+    return curve["axial_strain"][int(np.argmax(below))] if below.any() else float("nan")  # nan: never softens
 
 
 def summary(pts):

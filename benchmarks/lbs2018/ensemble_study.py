@@ -49,9 +49,10 @@ from nonlocal_study import spread_after_peak  # noqa: E402
 
 CURVES = os.path.join(analyse.results, "ensemble_curves.csv")
 WIDTHS = os.path.join(analyse.results, "ensemble_widths.csv")
-ELEMENT_MM = {"2x4": 5.0, "4x8": 2.5, "8x16, one point": 1.25}
 MESHES = [("2x4", "2x4"), ("4x8", "4x8"), ("8x16, one point", "8x16_op")]  # label, run.sh's mesh part
 FAMILIES = [("local", "mesh", ""), ("local elastic R = 2.5 mm", "nonlocal", "_le")]  # label, prefix, suffix
+# element size (mm) per mesh label, from band_study.py's cases (the same labels)
+ELEMENT_MM = {m: h for _, cases in band_study.FAMILIES for _, m, h in cases}
 MEMBERS = (0, 1, 2)  # K: the lateral pressure 1.5e5 (1 + K 1e-6) N/m (run.sh _pK); K = 0 the case itself
 DROP = 0.02         # the onset of softening: the first row this far below the curve's peak
 LATE = 0.075         # band_study.py's second interval: every run has dropped by 7.5 %
@@ -93,7 +94,7 @@ def member_widths(case):
     """{(from, to): (half-share width, inclined FWHM)} in m of @p case's shear strain increment
     (band_study.py's measures; the FWHM is nan where the profile does not fall to half on both
     sides)."""
-    eps, ratio, _ = band_study.stage2(case)
+    _, ratio, _ = band_study.stage2(case)
     coulomb = bw.coulomb_angle(ratio.max())
     out = {}
     for a, b in band_study.INTERVALS:

@@ -5,10 +5,10 @@ A single post-peak curve of this specimen moves by up to 29 % at one step
 from rounding alone (README, "The band width over three meshes, and what
 rounding does"): the row at which one run has dropped and another not yet
 sets the largest spread of single runs. Here each mesh of the local and the
-local elastic family (2x4, 4x8, 8x16 one point; 0.125 % steps) runs as an
-ensemble whose members differ only in the sixth digit of the lateral
-pressure (run.sh CASE_pK), and the spread over the meshes is taken of the
-ensembles' mean curves.
+local elastic families (R = 2.5 mm; R = 5 mm from session 49; 2x4, 4x8, 8x16
+one point; 0.125 % steps) runs as an ensemble whose members differ only in
+the sixth digit of the lateral pressure (run.sh CASE_pK), and the spread
+over the meshes is taken of the ensembles' mean curves.
 
 Usage: ensemble_study.py   (Debian's python3 with numpy)
 
@@ -50,7 +50,9 @@ from nonlocal_study import spread_after_peak  # noqa: E402
 CURVES = os.path.join(analyse.results, "ensemble_curves.csv")
 WIDTHS = os.path.join(analyse.results, "ensemble_widths.csv")
 MESHES = [("2x4", "2x4"), ("4x8", "4x8"), ("8x16, one point", "8x16_op")]  # label, run.sh's mesh part
-FAMILIES = [("local", "mesh", ""), ("local elastic R = 2.5 mm", "nonlocal", "_le")]  # label, prefix, suffix
+# label, prefix, suffix; R = 5 mm (session 49): the R at which 2x4 resolves R too (README)
+FAMILIES = [("local", "mesh", ""), ("local elastic R = 2.5 mm", "nonlocal", "_le"),
+            ("local elastic R = 5 mm", "nonlocal", "_R5_le")]
 # element size (mm) per mesh label, from band_study.py's cases (the same labels)
 ELEMENT_MM = {m: h for _, cases in band_study.FAMILIES for _, m, h in cases}
 MEMBERS = (0, 1, 2)  # K: the lateral pressure 1.5e5 (1 + K 1e-6) N/m (run.sh _pK); K = 0 the case itself
@@ -206,7 +208,7 @@ def print_spread_over(curves, meshes):
 
 def plot(curves):
     """results/ensemble_curves.png: the members and their means, one panel per family."""
-    fig, axs = plt.subplots(1, len(FAMILIES), figsize=(12, 4.5), sharey=True)
+    fig, axs = plt.subplots(1, len(FAMILIES), figsize=(4 * len(FAMILIES), 4.5), sharey=True)
     for ax, fam in zip(axs, FAMILIES):
         for (m, _), colour in zip(MESHES, ("tab:blue", "tab:orange", "tab:green")):
             done = finished_members(curves, fam, m)

@@ -1,5 +1,6 @@
 #include "template_check.h"
 #include "packing_check.h"
+#include "stop_request.h"
 
 #include <poll.h>
 #include <spawn.h>
@@ -219,6 +220,14 @@ bool succeeded(const ChildRun& run)
 {
   return !run.timed_out && WIFEXITED(run.status) && WEXITSTATUS(run.status) == 0;
 }
+
+/// Whether the child ended by a signal while fe2dem was asked to stop: mpiexec signals the
+/// whole process group, so a SIGTERM meant for fe2dem also ends the check's LIGGGHTS. The
+/// template is not at fault then; fe2dem reports the stop once its RVEs are made.
+bool ended_by_the_stop(const ChildRun& run)
+{
+  return stop_requested() && !run.timed_out && run.status != -1 && WIFSIGNALED(run.status);
+}
 } // namespace
 
 void check_rve_template(const RveSetup& setup, const int dim)
@@ -237,7 +246,7 @@ void check_rve_template(const RveSetup& setup, const int dim)
     }
   // A template set-up takes seconds; the limit only keeps a broken one from hanging the job.
   const ChildRun run = run_template_in_child(setup, {}, 600);
-  if (succeeded(run))
+  if (succeeded(run) || ended_by_the_stop(run))
     return;
   // The echo shows each command before it runs: the one before ERROR failed.
   const auto [error, command] = run.error();
@@ -258,7 +267,7 @@ void check_rve_state_file(const RveSetup& setup, const std::string& state_file, 
 {
   const ChildRun run =
     run_template_in_child(setup, {{"rve_restore", "1"}, {"rve_restart_file", state_file}}, seconds);
-  if (succeeded(run))
+  if (succeeded(run) || ended_by_the_stop(run))
     return;
   // (the command echoed before a read_restart error is not the one that failed: not named)
   const std::string error = run.error().first;

@@ -221,9 +221,10 @@ bool succeeded(const ChildRun& run)
   return !run.timed_out && WIFEXITED(run.status) && WEXITSTATUS(run.status) == 0;
 }
 
-/// Whether the child ended by a signal while fe2dem was asked to stop: mpiexec signals the
-/// whole process group, so a SIGTERM meant for fe2dem also ends the check's LIGGGHTS. The
-/// template is not at fault then; fe2dem reports the stop once its RVEs are made.
+/// Whether the child ended by a signal while fe2dem was asked to stop: a SIGTERM sent to
+/// mpiexec can end the check's LIGGGHTS as well as fe2dem (seen under load in
+/// restart_sigterm_stuck_solve_np2). The template is not at fault then; fe2dem reports the
+/// stop once its RVEs are made (refuse_stop_before_first_step).
 bool ended_by_the_stop(const ChildRun& run)
 {
   return stop_requested() && !run.timed_out && run.status != -1 && WIFSIGNALED(run.status);

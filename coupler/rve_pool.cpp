@@ -1,5 +1,6 @@
 #include "rve_pool.h"
 #include "fault_injecting_rve.h"
+#include "stop_request.h"
 
 #include <algorithm>
 #include <climits>
@@ -65,6 +66,7 @@ RvePool<dim>::RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> fact
         }
     }
   raise_first_failure(failed, reason, ", saved at load step " + std::to_string(load_step_));
+  refuse_pending_stop("while the saved RVE states were checked");
   for (auto& [k, state] : states)
     local_[k] = factory_of(k).restore(state);
 }
@@ -85,6 +87,7 @@ RvePool<dim>::RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> fact
   MPI_Comm_rank(comm_, &rank_);
   MPI_Comm_size(comm_, &n_ranks_);
   check_factories(); // before any instance exists
+  refuse_pending_stop("while the RVE template was checked");
   place_in_blocks();
 }
 
@@ -136,6 +139,19 @@ void RvePool<dim>::check_factories() const
   problem = broadcast(problem, 0);
   if (!problem.empty())
     throw std::runtime_error(problem);
+}
+
+// A check's child LIGGGHTS ended by the stop's signal passes the check
+// (template_check.cpp): after a stop a passed check proves nothing, and a
+// damaged state or template would end this process in LIGGGHTS (exit(1),
+// SIGSEGV) before the stop is reported.
+template <int dim>
+void RvePool<dim>::refuse_pending_stop(const char* when) const
+{
+  int pending = stop_requested() ? 1 : 0, any = 0;
+  MPI_Allreduce(&pending, &any, 1, MPI_INT, MPI_MAX, comm_);
+  if (any != 0)
+    throw StopRequestedError(std::string("stopped by a signal ") + when + ", before any RVE was made");
 }
 
 template <int dim>

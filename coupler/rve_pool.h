@@ -56,6 +56,8 @@ public:
    * @p more_factories[k - 1] (each checked once too).
    * @pre every rank passes the same @p points and equivalent factories.
    * @throws std::invalid_argument if a point names a factory that was not given.
+   * @throws StopRequestedError (stop_request.h) on every rank, before any RVE
+   *         exists, if a stop was requested on any rank by the end of the checks.
    */
   RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
           const std::vector<QuadraturePoint>& points,
@@ -68,7 +70,10 @@ public:
    * block placement over this communicator, whatever the placement was when
    * they were saved; @p load_step is the number of committed load steps.
    * Each rank asks @p state_of only for its own RVEs; each state is restored
-   * by its point's factory, as in the first constructor.
+   * by its point's factory, as in the first constructor, after every
+   * state passed its factory's check_state().
+   * @throws StopRequestedError on every rank, before any state is restored,
+   *         if a stop was requested on any rank by the end of those checks.
    */
   RvePool(MPI_Comm comm, std::shared_ptr<const RveFactory<dim>> factory,
           const std::vector<QuadraturePoint>& points, const StateSource& state_of, int load_step,
@@ -154,6 +159,8 @@ private:
   void require_committed(const char* what) const;
   /// check() of every factory on rank 0; the first message raised on every rank.
   void check_factories() const;
+  /// Collective: raises StopRequestedError on every rank if any rank has stop_requested().
+  void refuse_pending_stop(const char* when) const;
   /// Point-to-point: @p bytes (given on rank @p from) arrive on rank @p to; empty elsewhere.
   std::vector<char> send_bytes(int from, int to, std::vector<char> bytes) const;
   void place_in_blocks();

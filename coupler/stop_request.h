@@ -10,8 +10,22 @@
  */
 #pragma once
 
+#include <stdexcept>
+
 namespace fe2dem
 {
+/**
+ * Raised, on every rank, where a pending stop keeps RVEs from being made
+ * (RvePool's constructors, after their checks): a check whose child
+ * LIGGGHTS the stop's signal ended has passed without proving anything
+ * (template_check.cpp), so nothing is built from what it checked.
+ */
+class StopRequestedError : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
 /// Asks running and later RVE solves to end early. Async-signal-safe: for signal handlers.
 void request_stop() noexcept;
 /// Whether request_stop() was called in this process.

@@ -223,8 +223,8 @@ bool succeeded(const ChildRun& run)
 
 /// Whether the child ended by a signal while fe2dem was asked to stop: a SIGTERM sent to
 /// mpiexec can end the check's LIGGGHTS as well as fe2dem (seen under load in
-/// restart_sigterm_stuck_solve_np2). The template is not at fault then; fe2dem reports the
-/// stop once its RVEs are made (refuse_stop_before_first_step).
+/// restart_sigterm_stuck_solve_np2). The template is not at fault then, and the check proves
+/// nothing: RvePool makes no RVE after it (refuse_pending_stop) and fe2dem reports the stop.
 bool ended_by_the_stop(const ChildRun& run)
 {
   return stop_requested() && !run.timed_out && run.status != -1 && WIFSIGNALED(run.status);

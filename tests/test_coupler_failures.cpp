@@ -3,14 +3,16 @@
 // naming IP, position, load step and reason on every rank; an error raised
 // inside LIGGGHTS becomes an exception (not MPI_Abort), reported the same way,
 // and the RVE goes on from its committed state; an injected fault gives the
-// RVE its solve budget back.
+// RVE its solve budget back; a stop pending after the checks (on any rank)
+// makes no RVE and restores no state, on every rank.
 // Usage: [mpirun -np N] test_coupler_failures CASE TEMPLATE PACKING_PREFIX
-//   CASE: broken_template | exploding | liggghts_error | injected_fault_keeps_budget
+//   CASE: broken_template | exploding | liggghts_error | injected_fault_keeps_budget | stop_after_checks
 #include "check.h"
 #include "liggghts_error_trap.h"
 #include "liggghts_instance.h"
 #include "rve_pool.h"
 #include "servo_rve_factory.h"
+#include "stop_request.h"
 #include "template_check.h"
 
 #include <mpi.h>
@@ -112,6 +114,38 @@ int main(int argc, char** argv)
                 "DEM steps " + std::to_string(after[1].statistics.dem_steps));
     check.truth("... like the other RVE's", after[1].statistics.dem_steps == after[0].statistics.dem_steps,
                 std::to_string(after[1].statistics.dem_steps) + " against " + std::to_string(after[0].statistics.dem_steps));
+  }
+  else if (c == "stop_after_checks")
+  {
+    // A stop's signal can end a check's child LIGGGHTS, and the check then passes
+    // (template_check.cpp): a damaged state would crash this process in its restore.
+    // The stop is requested here on the last rank only: the refusal must be collective.
+    int size = 1;
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    std::vector<std::vector<char>> saved; // every state, on every rank
+    {
+      RvePool<2> pool(MPI_COMM_WORLD, factory(), points);
+      for (int root = 0; root < size; ++root)
+        if (auto states = pool.gather_committed_states(root); root == rank)
+          saved = std::move(states);
+    }
+    const auto state_of = [&](std::size_t k) { return saved.at(k); };
+    {
+      RvePool<2> pool(MPI_COMM_WORLD, factory(), points, state_of, 0);
+      check.truth("without a stop the saved states restore (the control)", pool.n_local() > 0);
+    }
+    // The stop arrives while the states are read, after the template check (sticky from then on).
+    const auto state_then_stop = [&](std::size_t k) {
+      if (rank == size - 1)
+        request_stop();
+      return saved.at(k);
+    };
+    check.throws_with("a stop pending on one rank after the state checks restores no state, on every rank",
+                      [&] { RvePool<2> pool(MPI_COMM_WORLD, factory(), points, state_then_stop, 0); },
+                      "stopped by a signal while the saved RVE states were checked, before any RVE was made");
+    check.throws_with("... and after the template check makes no RVE, on every rank",
+                      [&] { RvePool<2> pool(MPI_COMM_WORLD, factory(), points); },
+                      "stopped by a signal while the RVE template was checked, before any RVE was made");
   }
   else
     check.truth("known case", false, c);

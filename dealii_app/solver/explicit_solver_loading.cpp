@@ -3,6 +3,7 @@
 #include "explicit_solver.h"
 #include "analyses/central_difference_analysis.h" // slow_loading_step_time
 #include "rve_pool.h" // CouplerError
+#include "stop_request.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_values.h>
@@ -33,7 +34,15 @@ void ExplicitSolver<dim>::run()
   const std::string checkpoint = resume_ ? resume_from_checkpoint() : "";
   // Before the RVEs: its refusals (a macro step shorter than one RVE check) are cheap.
   analysis_ = make_analysis<dim>(*this, prm_, highest_frequency(), relaxation_frequency(), pcout_);
-  make_material(checkpoint);
+  try
+  {
+    make_material(checkpoint);
+  }
+  catch (const StopRequestedError&) // raised on every rank: reported as a stop in the build below
+  {
+    refuse_stop_before_first_step("while the RVEs were built");
+    throw;
+  }
   refuse_stop_before_first_step("while the RVEs were built");
   make_elements();
   if (checkpoint.empty())

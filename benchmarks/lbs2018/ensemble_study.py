@@ -155,8 +155,8 @@ def print_widths(curves, widths):
 
 
 def reached_end(curve):
-    """Whether @p curve (analyse.curve's dict) reached 10 % axial strain."""
-    return abs(curve["axial_strain"][-1] - 0.10) < 1e-6
+    """Whether @p curve (analyse.curve's dict) reached 10 % axial strain (a run just started has no rows)."""
+    return bool(curve["axial_strain"]) and abs(curve["axial_strain"][-1] - 0.10) < 1e-6
 
 
 def finished(curves, c):

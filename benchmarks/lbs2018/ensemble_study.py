@@ -19,7 +19,9 @@ with the members in runs/CASE[_pK]/summary.csv (run.sh), and prints:
   member K), beside the spread of the ensemble means, from the peak of the
   family's mean curve to 10 %: mean and largest, and from 7.5 % on; over the
   three meshes, over 2x4 and 4x8 alone (session 30's pair), and over 4x8 and 8x16
-  one point (the meshes that resolve R);
+  one point (the meshes that resolve R); beside each spread of means its ratios to the
+  local family's over the same members (the criterion: at most 0.5), and with four members
+  the spread of the means of every three of them;
 - per mesh the members' own spread (max - min over mean at each step, from
   the peak of their mean): what one mesh scatters by, the noise under a
   single-run spread;
@@ -55,7 +57,7 @@ FAMILIES = [("local", "mesh", ""), ("local elastic R = 2.5 mm", "nonlocal", "_le
             ("local elastic R = 5 mm", "nonlocal", "_R5_le")]
 # element size (mm) per mesh label, from band_study.py's cases (the same labels)
 ELEMENT_MM = {m: h for _, cases in band_study.FAMILIES for _, m, h in cases}
-MEMBERS = (0, 1, 2)  # K: the lateral pressure 1.5e5 (1 + K 1e-6) N/m (run.sh _pK); K = 0 the case itself
+MEMBERS = (0, 1, 2, 3)  # K: the lateral pressure 1.5e5 (1 + K 1e-6) N/m (run.sh _pK); K = 0 the case itself
 DROP = 0.02         # the onset of softening: the first row this far below the curve's peak
 LATE = 0.075         # band_study.py's second interval: every run has dropped by 7.5 %
 
@@ -190,20 +192,45 @@ def summary(pts):
     return e[0], s.mean(), s.max(), late.mean(), late.max()
 
 
+def common_members(curves, fam, meshes):
+    """The members K of @p fam that every mesh labelled @p meshes finished."""
+    return [k for k in MEMBERS if all(finished(curves, case_name(fam, m, k)) for m in meshes)]
+
+
+def spread_of_means(curves, fam, meshes, members):
+    """summary() of the spread over @p meshes of @p fam's mean curves of @p members (one member:
+    its own curves)."""
+    means = {m: mean_curve(curves, [case_name(fam, m, k) for k in members]) for m in meshes}
+    return summary(spread_after_peak(means, list(meshes))[0])
+
+
+def against_local(curves, fam, meshes, members, s):
+    """The criterion's ratios of summary @p s (mean, largest) to the local family's over the same
+    @p members and meshes, like for like; '' for one member, for local itself, or where local
+    lacks one of the members."""
+    local = FAMILIES[0]
+    if fam is local or len(members) < 2 or not set(members) <= set(common_members(curves, local, meshes)):
+        return ""
+    ref = spread_of_means(curves, local, meshes, members)
+    return f"{s[1] / ref[1]:.2f}, {s[2] / ref[2]:.2f} (local {100 * ref[1]:.3g} / {100 * ref[2]:.3g} %)"
+
+
 def print_spread_over(curves, meshes):
     """The first table's rows for the meshes labelled @p meshes: every member K that all of them
-    finished (its single-run spread over them) and, with two such members or more, the spread
-    over them of their ensemble means."""
+    finished (its single-run spread over them); with two such members or more, the spread over
+    them of their ensemble means, against local's over the same members; with four or more, also
+    the means of every set that leaves one member out (how much one member moves the ratio)."""
     for fam in FAMILIES:
-        members = [k for k in MEMBERS if all(finished(curves, case_name(fam, m, k)) for m in meshes)]
-        rows = [(f"member K = {k}", {m: curves[case_name(fam, m, k)] for m in meshes}) for k in members]
+        members = common_members(curves, fam, meshes)
+        sets = [(f"member K = {k}", [k]) for k in members]
         if len(members) >= 2:
-            means = {m: mean_curve(curves, [case_name(fam, m, k) for k in members]) for m in meshes}
-            rows.append((f"ensemble means of K = {', '.join(map(str, members))}", means))
-        for label, by_mesh in rows:
-            pts, _ = spread_after_peak(by_mesh, list(meshes))
+            sets.append((f"ensemble means of K = {', '.join(map(str, members))}", members))
+        if len(members) >= 4:
+            sets += [(f"means without K = {k}", [j for j in members if j != k]) for k in members]
+        for label, ks in sets:
+            s = spread_of_means(curves, fam, meshes, ks)
             print(f"| {fam[0]} | {', '.join(meshes)} | {label} | "
-                  + " | ".join(f"{100 * v:.3g} %" for v in summary(pts)) + " |")
+                  + " | ".join(f"{100 * v:.3g} %" for v in s) + f" | {against_local(curves, fam, meshes, ks, s)} |")
 
 
 def plot(curves):
@@ -237,7 +264,8 @@ def main():
     curves = stored_curves()
     plot(curves)
     print(f"\n| family | meshes | curves | peak of the mean at | spread after it: mean | largest | "
-          f"from {100 * LATE:g} %: mean | largest |\n" + "|---" * 8 + "|")
+          f"from {100 * LATE:g} %: mean | largest | against local (same members): mean, largest |\n"
+          + "|---" * 9 + "|")
     print_spread_over(curves, [m for m, _ in MESHES])
     print_spread_over(curves, [m for m, _ in MESHES[:2]])  # 2x4, 4x8: session 30's pair of meshes
     # 4x8, 8x16 one point: the two meshes that resolve R = 2.5 mm (an interior IP keeps 0.51-0.54 of

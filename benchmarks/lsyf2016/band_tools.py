@@ -31,6 +31,13 @@ def inplane_band(history, rows, band_angles=range(180), field="F", end=-1):
     return x, gamma, width, angle, centres[int(np.argmax(means))]
 
 
+def row_means(x, gamma):
+    """(y of each row of IPs, the mean of @p gamma over the row): a structured mesh's profile across
+    a band along x."""
+    y, row = np.unique(np.round(x[:, 1], 6), return_inverse=True)
+    return y, np.bincount(row, weights=gamma) / np.bincount(row)
+
+
 def shear_modulus(E, nu):
     """The shear modulus of an isotropic law of Young's modulus E and Poisson ratio nu."""
     return E / (2 * (1 + nu))

@@ -329,6 +329,12 @@ struct Parameters
   std::string file; ///< the parameter file
   RveParameters rve; ///< subsection RVE (Material type = RVE)
   static void declare_parameters(dealii::ParameterHandler& prm);
+  /// Reads @p file into every subsection and checks the subsections against each other.
   void parse(dealii::ParameterHandler& prm, const std::string& file);
+
+private:
+  /// With RVEs: checks the template and packing files (and the imperfection's) and adds their
+  /// fingerprints to #identity.
+  void add_rve_files(const std::string& file);
 };
 } // namespace fe2dem::macro

@@ -4,6 +4,7 @@
 #include <array>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace fe2dem
 {
@@ -198,10 +199,69 @@ FrameTopology<2> build_frame_2d(const std::vector<int>& tags, const std::vector<
   return frame;
 }
 
+/// One 3D frame particle that is no other's image (the original) and its
+/// periodic images.
+struct ImageGroup
+{
+  int original;
+  std::vector<int> members; ///< member b = original + sum_{bit k of b} L_k e_k (bits over all 3 axes)
+  std::array<bool, 3> cuts; ///< faces x_k = 0 it cuts
+};
+
+/// The group of original @p o (no image at -L_k): its images along the axes
+/// whose faces x_k = 0 it cuts, each reached from another member along one
+/// axis (@p plus: each particle's image at +L_k, or -1).
+ImageGroup collect_images(int o, const std::array<std::vector<int>, 3>& plus, const std::vector<int>& tags,
+                          const std::vector<Vec3>& X, const std::vector<double>& radius)
+{
+  const char* axis = "xyz";
+  ImageGroup g{o, std::vector<int>(8, -1), {}};
+  for (int k = 0; k < 3; ++k)
+    g.cuts[k] = plus[k][o] >= 0;
+  if (!g.cuts[0] && !g.cuts[1] && !g.cuts[2])
+    throw std::runtime_error("unpaired " + describe(tags[o], X[o]) +
+                             ": no periodic image at +Lx, +Ly or +Lz (and it is not the image of "
+                             "another frame particle); rebuild the frame with build_frame_3d.py");
+  g.members[0] = o;
+  for (int b = 1; b < 8; ++b)
+  {
+    bool wanted = true;
+    for (int k = 0; k < 3; ++k)
+      wanted = wanted && (!(b >> k & 1) || g.cuts[k]);
+    if (!wanted)
+      continue;
+    int k = 0; // reach member b from member b - 2^k along the lowest set bit
+    while (!(b >> k & 1))
+      ++k;
+    const int from = g.members[b & ~(1 << k)];
+    const int to = plus[k][from];
+    if (to < 0)
+    {
+      std::ostringstream msg;
+      msg << describe(tags[o], X[o]) << " cuts the faces";
+      for (int a = 0; a < 3; ++a)
+        if (g.cuts[a])
+          msg << " " << axis[a] << " = 0";
+      msg << " but its image " << describe(tags[from], X[from]) << " has no image at +L"
+          << axis[k] << "; a frame particle needs all 2^s images; rebuild the frame with build_frame_3d.py";
+      throw std::runtime_error(msg.str());
+    }
+    if (std::abs(radius[to] - radius[o]) > 1e-9 * radius[o])
+      throw std::runtime_error(describe(tags[o], X[o]) + " and its periodic image " +
+                               describe(tags[to], X[to]) + " have different radii");
+    g.members[b] = to;
+  }
+  return g;
+}
+
 /// 3D: the images of every frame particle along each axis, then one group
-/// per original (a particle with no image at -L_k), 2^s members.
-FrameTopology<3> build_frame_3d(const std::vector<int>& tags, const std::vector<Vec3>& X,
-                                const std::vector<double>& radius, const Vec3& L, double tol)
+/// per original (a particle with no image at -L_k), 2^s members, every
+/// particle in exactly one; with the index of the corner's group (images
+/// along all three axes). Throws on an incomplete or ambiguous frame, naming
+/// the particle.
+std::pair<std::vector<ImageGroup>, int> find_image_groups_3d(const std::vector<int>& tags, const std::vector<Vec3>& X,
+                                                             const std::vector<double>& radius, const Vec3& L,
+                                                             double tol)
 {
   const std::size_t n = X.size();
   std::array<std::vector<int>, 3> plus;
@@ -215,56 +275,14 @@ FrameTopology<3> build_frame_3d(const std::vector<int>& tags, const std::vector<
       if (plus[k][i] >= 0)
         is_image[plus[k][i]] = true;
   }
-  const char* axis = "xyz";
-  struct Found
-  {
-    int original;
-    std::vector<int> members; ///< member b = original + sum_{bit k of b} L_k e_k (bits over all 3 axes)
-    std::array<bool, 3> cuts; ///< faces x_k = 0 it cuts
-  };
-  std::vector<Found> found;
+  std::vector<ImageGroup> found;
   std::vector<int> owner(n, -1);
   int corner = -1;
   for (std::size_t o = 0; o < n; ++o)
   {
     if (is_image[o])
       continue;
-    Found g{static_cast<int>(o), std::vector<int>(8, -1), {}};
-    for (int k = 0; k < 3; ++k)
-      g.cuts[k] = plus[k][o] >= 0;
-    if (!g.cuts[0] && !g.cuts[1] && !g.cuts[2])
-      throw std::runtime_error("unpaired " + describe(tags[o], X[o]) +
-                               ": no periodic image at +Lx, +Ly or +Lz (and it is not the image of "
-                               "another frame particle); rebuild the frame with build_frame_3d.py");
-    g.members[0] = static_cast<int>(o);
-    for (int b = 1; b < 8; ++b)
-    {
-      bool wanted = true;
-      for (int k = 0; k < 3; ++k)
-        wanted = wanted && (!(b >> k & 1) || g.cuts[k]);
-      if (!wanted)
-        continue;
-      int k = 0; // reach member b from member b - 2^k along the lowest set bit
-      while (!(b >> k & 1))
-        ++k;
-      const int from = g.members[b & ~(1 << k)];
-      const int to = plus[k][from];
-      if (to < 0)
-      {
-        std::ostringstream msg;
-        msg << describe(tags[o], X[o]) << " cuts the faces";
-        for (int a = 0; a < 3; ++a)
-          if (g.cuts[a])
-            msg << " " << axis[a] << " = 0";
-        msg << " but its image " << describe(tags[from], X[from]) << " has no image at +L"
-            << axis[k] << "; a frame particle needs all 2^s images; rebuild the frame with build_frame_3d.py";
-        throw std::runtime_error(msg.str());
-      }
-      if (std::abs(radius[to] - radius[o]) > 1e-9 * radius[o])
-        throw std::runtime_error(describe(tags[o], X[o]) + " and its periodic image " +
-                                 describe(tags[to], X[to]) + " have different radii");
-      g.members[b] = to;
-    }
+    const ImageGroup g = collect_images(static_cast<int>(o), plus, tags, X, radius);
     for (int m : g.members)
       if (m >= 0)
       {
@@ -296,53 +314,19 @@ FrameTopology<3> build_frame_3d(const std::vector<int>& tags, const std::vector<
                              format(L[1]) + " " + format(L[2]) +
                              "' against the packing (build it with rve_templates/build_frame_3d.py)");
 
-  FrameTopology<3> frame;
-  frame.L = L;
-  frame.origin = X[found[corner].original];
-  auto add = [&](int i, int bits, FrameRole role, int group) {
-    FrameParticle<3> p;
-    p.tag = tags[i];
-    p.X = X[i] - frame.origin;
-    p.radius = radius[i];
-    p.role = role;
-    p.pair = group;
-    for (int k = 0; k < 3; ++k)
-      p.image[k] = bits >> k & 1;
-    frame.particles.push_back(p);
-    return static_cast<int>(frame.particles.size()) - 1;
-  };
-  for (int b = 0; b < 8; ++b)
-    frame.corners[b] = add(found[corner].members[b], b, FrameRole::corner, -1);
-  // Groups in the order of their originals' ids: independent of atom order.
-  std::vector<const Found*> order;
-  for (const Found& g : found)
-    if (&g != &found[corner])
-      order.push_back(&g);
-  std::sort(order.begin(), order.end(),
-            [&](const Found* a, const Found* b) { return tags[a->original] < tags[b->original]; });
-  std::vector<std::array<int, 8>> by_bits{frame.corners}; // frame indices of each group's images
-  for (const Found* g : order)
-  {
-    FrameTopology<3>::Group members{-1, -1, -1, -1};
-    std::array<int, 8> bits;
-    bits.fill(-1);
-    int slot = 0;
-    const int e = static_cast<int>(frame.groups.size());
-    for (int b = 0; b < 8; ++b)
-      if (g->members[b] >= 0)
-        members[slot++] = bits[b] =
-          add(g->members[b], b, b == 0 ? FrameRole::edge_minus : FrameRole::edge_plus, e);
-    frame.groups.push_back(members);
-    by_bits.push_back(bits);
-  }
+  return {found, corner};
+}
 
-  // Area vectors: each face x_k = 0 shared among the images on it in
-  // proportion to their cross-section; the face x_k = L_k likewise (header).
+/// (R1) in 3D: each face x_k = 0 shared among the images on it in proportion
+/// to their cross-section; the face x_k = L_k likewise (header). @p by_bits:
+/// the frame indices of each group's images by their bits (-1: none).
+void set_area_vectors_3d(FrameTopology<3>& frame, const std::vector<std::array<int, 8>>& by_bits)
+{
+  const Vec3& L = frame.L;
+  const char* axis = "xyz";
   const double V = frame.reference_volume();
   for (int k = 0; k < 3; ++k)
   {
-    Vec3 shift{};
-    shift[k] = L[k];
     struct OnFace
     {
       int minus, plus; ///< frame indices on x_k = 0 and of its +L_k image
@@ -369,6 +353,57 @@ FrameTopology<3> build_frame_3d(const std::vector<int>& tags, const std::vector<
       frame.particles[f.plus].area_vector[k] += a;
     }
   }
+}
+
+/// The 3D frame: the corner's eight images first, then the other groups in
+/// the order of their originals' ids, (R1).
+FrameTopology<3> build_frame_3d(const std::vector<int>& tags, const std::vector<Vec3>& X,
+                                const std::vector<double>& radius, const Vec3& L, double tol)
+{
+  const std::pair<std::vector<ImageGroup>, int> groups = find_image_groups_3d(tags, X, radius, L, tol);
+  const std::vector<ImageGroup>& found = groups.first;
+  const int corner = groups.second;
+  FrameTopology<3> frame;
+  frame.L = L;
+  frame.origin = X[found[corner].original];
+  auto add = [&](int i, int bits, FrameRole role, int group) {
+    FrameParticle<3> p;
+    p.tag = tags[i];
+    p.X = X[i] - frame.origin;
+    p.radius = radius[i];
+    p.role = role;
+    p.pair = group;
+    for (int k = 0; k < 3; ++k)
+      p.image[k] = bits >> k & 1;
+    frame.particles.push_back(p);
+    return static_cast<int>(frame.particles.size()) - 1;
+  };
+  for (int b = 0; b < 8; ++b)
+    frame.corners[b] = add(found[corner].members[b], b, FrameRole::corner, -1);
+  // Groups in the order of their originals' ids: independent of atom order.
+  std::vector<const ImageGroup*> order;
+  for (const ImageGroup& g : found)
+    if (&g != &found[corner])
+      order.push_back(&g);
+  std::sort(order.begin(), order.end(),
+            [&](const ImageGroup* a, const ImageGroup* b) { return tags[a->original] < tags[b->original]; });
+  std::vector<std::array<int, 8>> by_bits{frame.corners}; // frame indices of each group's images
+  for (const ImageGroup* g : order)
+  {
+    FrameTopology<3>::Group members{-1, -1, -1, -1};
+    std::array<int, 8> bits;
+    bits.fill(-1);
+    int slot = 0;
+    const int e = static_cast<int>(frame.groups.size());
+    for (int b = 0; b < 8; ++b)
+      if (g->members[b] >= 0)
+        members[slot++] = bits[b] =
+          add(g->members[b], b, b == 0 ? FrameRole::edge_minus : FrameRole::edge_plus, e);
+    frame.groups.push_back(members);
+    by_bits.push_back(bits);
+  }
+
+  set_area_vectors_3d(frame, by_bits);
   return frame;
 }
 } // namespace

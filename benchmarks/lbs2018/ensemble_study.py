@@ -62,35 +62,35 @@ DROP = 0.02         # the onset of softening: the first row this far below the c
 LATE = 0.075         # band_study.py's second interval: every run has dropped by 7.5 %
 
 
-def case_name(family, mesh, k):
-    """run.sh's name of member @p k of @p family on the mesh labelled @p mesh, e.g.
-    nonlocal_8x16_op_le_quarter_p2."""
+def case_name(family, mesh, k, step="_quarter"):
+    """run.sh's name of member @p k of @p family on the mesh labelled @p mesh at stage 2's load
+    step @p step (run.sh's _quarter: 0.125 %, _eighth: 0.0625 %), e.g. nonlocal_8x16_op_le_quarter_p2."""
     _, prefix, suffix = family
-    return f"{prefix}_{dict(MESHES)[mesh]}{suffix}_quarter" + (f"_p{k}" if k else "")
+    return f"{prefix}_{dict(MESHES)[mesh]}{suffix}{step}" + (f"_p{k}" if k else "")
 
 
-def stored_curves():
-    """{case: {axial_strain, stress_ratio}} of every member: CURVES, updated with the finished
-    members that runs/ holds (and written back, so that a partial runs/ never drops a stored
-    member)."""
+def stored_curves(path=CURVES, step="_quarter"):
+    """{case: {axial_strain, stress_ratio}} of every member at load step @p step: the file @p path,
+    updated with the finished members that runs/ holds (and written back, so that a partial runs/
+    never drops a stored member)."""
     out = {}
-    if os.path.exists(CURVES):
-        for r in csv.DictReader(open(CURVES)):
+    if os.path.exists(path):
+        for r in csv.DictReader(open(path)):
             v = out.setdefault(r["case"], {"axial_strain": [], "stress_ratio": []})
             v["axial_strain"].append(float(r["axial_strain"]))
             v["stress_ratio"].append(float(r["stress_ratio"]))
-    names = [case_name(f, m, k) for f in FAMILIES for m, _ in MESHES for k in MEMBERS]
+    names = [case_name(f, m, k, step) for f in FAMILIES for m, _ in MESHES for k in MEMBERS]
     # Only runs that reached 10 %: a run still under way must not be stored as a member.
     ran = {c: v for c, v in ((c, analyse.curve(c)) for c in names) if v and reached_end(v)}
     if ran:
         out.update({c: {k: ran[c][k] for k in ("axial_strain", "stress_ratio")} for c in ran})
-        with open(CURVES, "w", newline="") as fh:
+        with open(path, "w", newline="") as fh:
             w = csv.writer(fh)
             w.writerow(["case", "axial_strain", "stress_ratio"])
             for c in sorted(out):
                 w.writerows([c, f"{e:.6g}", f"{r:.6g}"] for e, r in zip(out[c]["axial_strain"], out[c]["stress_ratio"]))
     if not out:
-        sys.exit(f"ensemble_study.py: no member in runs/ and no {CURVES} (run.sh CASE_pK ...)")
+        sys.exit(f"{os.path.basename(sys.argv[0])}: no member in runs/ and no {path} (run.sh CASE_pK ...)")
     return out
 
 

@@ -10,12 +10,12 @@
 #   nonlocal_1x1 ... nonlocal_4x8,        the meshes with the nonlocal operator,
 #   nonlocal_8x16                         R = 2.5 mm (README, "Local against
 #                                         nonlocal"; 8x16 not in 'all')
-#   nonlocal_MESH[_op][_RN][_aA][_le[E]][_half|_quarter|_eighth]  R = N mm (Staggering = A), e.g.
+#   nonlocal_MESH[_op][_RN][_aA][_le[E]][_half|_quarter|_eighth|_sixteenth]  R = N mm (Staggering = A), e.g.
 #                                         nonlocal_4x8_R5; _op (also mesh_MESH_op):
 #                                         one point per element; _le: Formulation =
 #                                         local elastic, C_e of E = 6e6 N/m, or E;
-#                                         _half, _quarter, _eighth (also mesh_MESH_half...):
-#                                         stage 2 in 0.25 / 0.125 / 0.0625 % steps (not in 'all'; README,
+#                                         _half, _quarter, _eighth, _sixteenth (also mesh_MESH_half...):
+#                                         stage 2 in 0.25 / 0.125 / 0.0625 / 0.03125 % steps (not in 'all'; README,
 #                                         "Local against nonlocal")
 #   ..._pK (after every other part, e.g.  the lateral pressure 1.5e5 (1 + K 1e-6) N/m:
 #   nonlocal_4x8_le_quarter_p1)           an ensemble member that differs from the
@@ -60,8 +60,8 @@ while [[ $# -gt 0 ]]; do
     --mts20) mts20=1; shift ;;
     all) cases+=("${all_cases[@]}"); shift ;;
     -h|--help) usage ;;
-    *) [[ " ${all_cases[*]} " == *" $1 "* || $1 =~ ^(mesh|nonlocal)_(1x1|1x2|2x4|4x8|8x16)(_op)?(_R[0-9.]+)?(_a[0-9.]+)?(_le[0-9.e]*)?(_half|_quarter|_eighth)?(_p[1-9][0-9]*)?$ ]] ||
-         { echo "run.sh: unknown case '$1' (cases: ${all_cases[*]}, mesh_MESH[_op], nonlocal_MESH[_op][_RN][_aA][_le[E]][_half|_quarter|_eighth][_pK], all)" >&2; exit 2; }
+    *) [[ " ${all_cases[*]} " == *" $1 "* || $1 =~ ^(mesh|nonlocal)_(1x1|1x2|2x4|4x8|8x16)(_op)?(_R[0-9.]+)?(_a[0-9.]+)?(_le[0-9.e]*)?(_half|_quarter|_eighth|_sixteenth)?(_p[1-9][0-9]*)?$ ]] ||
+         { echo "run.sh: unknown case '$1' (cases: ${all_cases[*]}, mesh_MESH[_op], nonlocal_MESH[_op][_RN][_aA][_le[E]][_half|_quarter|_eighth|_sixteenth][_pK], all)" >&2; exit 2; }
        cases+=("$1"); shift ;;
   esac
 done
@@ -83,11 +83,12 @@ overrides() {
       cells=${1#*_}; cells=${cells%%_*}
       printf 'subsection Geometry\n  set Cells x = %s\n  set Cells y = %s\nend\n' "${cells%x*}" "${cells#*x}"
       [[ $1 != *_steps22 ]] || printf 'subsection Loading\n  set Load steps = 22\n  set Axial strain = 0.055\nend\n'
-      # _half, _quarter, _eighth: stage 2 in 0.25, 0.125 and 0.0625 % steps (the load-step check
-      # of a whole curve; _eighth: of the ensembles' drop, session 52)
+      # _half, _quarter, _eighth, _sixteenth: stage 2 in 0.25, 0.125, 0.0625 and 0.03125 % steps
+      # (the load-step check of a whole curve; _eighth, _sixteenth: of the ensembles' drop, sessions 52-53)
       [[ $1 != *_half* ]] || printf 'subsection Loading\n  set Load steps = 40\nend\n'
       [[ $1 != *_quarter* ]] || printf 'subsection Loading\n  set Load steps = 80\nend\n'
       [[ $1 != *_eighth* ]] || printf 'subsection Loading\n  set Load steps = 160\nend\n'
+      [[ $1 != *_sixteenth* ]] || printf 'subsection Loading\n  set Load steps = 320\nend\n'
       # _pK: the lateral pressure 1 + K ppm higher, an ensemble member (the curves after the peak
       # part by rounding alone: README, "The band width over three meshes, and what rounding does")
       [[ ! $1 =~ _p([0-9]+)$ ]] ||

@@ -17,6 +17,8 @@
 #                                         _half, _quarter, _eighth, _sixteenth (also mesh_MESH_half...):
 #                                         stage 2 in 0.25 / 0.125 / 0.0625 / 0.03125 % steps (not in 'all'; README,
 #                                         "Local against nonlocal")
+#   ..._slRATE (before _pK, e.g.          slow loading at the nominal strain rate RATE /s
+#   mesh_2x4_quarter_sl0.25)              (fe2dem's default with RVEs) instead of relaxed steps
 #   ..._pK (after every other part, e.g.  the lateral pressure 1.5e5 (1 + K 1e-6) N/m:
 #   nonlocal_4x8_le_quarter_p1)           an ensemble member that differs from the
 #                                         case in the sixth digit of one load
@@ -60,8 +62,8 @@ while [[ $# -gt 0 ]]; do
     --mts20) mts20=1; shift ;;
     all) cases+=("${all_cases[@]}"); shift ;;
     -h|--help) usage ;;
-    *) [[ " ${all_cases[*]} " == *" $1 "* || $1 =~ ^(mesh|nonlocal)_(1x1|1x2|2x4|4x8|8x16)(_op)?(_R[0-9.]+)?(_a[0-9.]+)?(_le[0-9.e]*)?(_half|_quarter|_eighth|_sixteenth)?(_p[1-9][0-9]*)?$ ]] ||
-         { echo "run.sh: unknown case '$1' (cases: ${all_cases[*]}, mesh_MESH[_op], nonlocal_MESH[_op][_RN][_aA][_le[E]][_half|_quarter|_eighth|_sixteenth][_pK], all)" >&2; exit 2; }
+    *) [[ " ${all_cases[*]} " == *" $1 "* || $1 =~ ^(mesh|nonlocal)_(1x1|1x2|2x4|4x8|8x16)(_op)?(_R[0-9.]+)?(_a[0-9.]+)?(_le[0-9.e]*)?(_half|_quarter|_eighth|_sixteenth)?(_sl[0-9.]+)?(_p[1-9][0-9]*)?$ ]] ||
+         { echo "run.sh: unknown case '$1' (cases: ${all_cases[*]}, mesh_MESH[_op], nonlocal_MESH[_op][_RN][_aA][_le[E]][_half|_quarter|_eighth|_sixteenth][_slRATE][_pK], all)" >&2; exit 2; }
        cases+=("$1"); shift ;;
   esac
 done
@@ -89,6 +91,11 @@ overrides() {
       [[ $1 != *_quarter* ]] || printf 'subsection Loading\n  set Load steps = 80\nend\n'
       [[ $1 != *_eighth* ]] || printf 'subsection Loading\n  set Load steps = 160\nend\n'
       [[ $1 != *_sixteenth* ]] || printf 'subsection Loading\n  set Load steps = 320\nend\n'
+      # _slRATE: fe2dem's default quasi-static scheme with RVEs, slow loading at the nominal strain
+      # rate RATE /s, instead of [LBS]'s relaxed steps (session 54): the load steps then only set the
+      # rows (every step lasts its strain over RATE); the DR settings of lbs2018.prm do not apply
+      [[ ! $1 =~ _sl([0-9.]+) ]] ||
+        printf 'subsection Dynamics\n  set Quasi-static scheme = slow loading\n  set Strain rate = %s\nend\nsubsection Material\n  set DEM steps per iteration = 0\nend\n' "${BASH_REMATCH[1]}"
       # _pK: the lateral pressure 1 + K ppm higher, an ensemble member (the curves after the peak
       # part by rounding alone: README, "The band width over three meshes, and what rounding does")
       [[ ! $1 =~ _p([0-9]+)$ ]] ||

@@ -1,0 +1,152 @@
+#!/usr/bin/python3
+"""The [LBS] biaxial test by slow loading against relaxed steps (issue 37, session 54).
+
+Every other table of this study runs [LBS]'s scheme, each load step relaxed
+to rest, whose drop moves with the step (load_step_study.py). Here member
+K = 0 of the local and the local elastic R = 5 mm families runs by fe2dem's
+default quasi-static scheme with RVEs, slow loading at a nominal strain rate
+(run.sh CASE_quarter_slRATE: 0.125 % rows), on 2x4 at 0.25 and 0.125 /s and
+on 4x8 at 0.25 /s.
+
+Usage: slow_loading_study.py   (Debian's python3 with numpy)
+
+Reads results/slow_loading_curves.csv (updated from runs/CASE/summary.csv,
+so that the tables regenerate without runs/), results/ensemble_curves.csv
+and results/load_step_curves.csv (the relaxed steps), and prints:
+- every slow-loading run's peak (ratio, axial strain), onset (the row 0.02
+  below the peak) and ratio at 10 %;
+- per family and mesh the two rates against each other: the largest
+  relative difference of the stress ratio up to 5 % and the spread measure
+  of the criterion ((max - min)/mean from the peak of their mean to 10 %);
+- per family on 2x4 the slow-loading run at each rate against the relaxed
+  steps' member K = 0 and mean of K = 0-3 at 0.125, 0.0625 and 0.03125 %
+  (where run), in the same two measures;
+- the spread over 2x4 and 4x8 of the slow-loading runs at 0.25 /s, local
+  against R = 5 mm, beside the relaxed-step K = 0 pair at each step;
+and draws results/slow_loading.png.
+"""
+import os
+import sys
+
+import matplotlib
+import numpy as np
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import analyse  # noqa: E402
+import ensemble_study as es  # noqa: E402  (names, members, means, onsets)
+import load_step_study as ls  # noqa: E402  (the relaxed steps at every load step)
+
+RATES = [("_quarter_sl0.25", "0.25 /s", "tab:red"), ("_quarter_sl0.125", "0.125 /s", "tab:purple")]
+CURVES = os.path.join(analyse.results, "slow_loading_curves.csv")
+PRE_PEAK = 0.05  # the rows compared before the peak: 0.5 % to 5 %
+
+
+def pre_peak_difference(a, b):
+    """The largest |a - b| / mean of the stress ratios of curves @p a and @p b (shared rows) from 0.5 %
+    to PRE_PEAK."""
+    e = np.array(a["axial_strain"])
+    ra, rb = np.array(a["stress_ratio"]), np.array(b["stress_ratio"][:len(e)])
+    keep = (e >= 0.005 - 1e-9) & (e <= PRE_PEAK + 1e-9)
+    return float(np.max(np.abs(ra[keep] - rb[keep]) / (0.5 * (ra[keep] + rb[keep]))))
+
+
+def compare(a, b):
+    """Cells of curves @p a against @p b: the pre-peak difference and ls.spread_of's mean and largest."""
+    s = ls.spread_of({"a": a, "b": b})
+    return f"{100 * pre_peak_difference(a, b):.3g} % | {ls.pct(s)}"
+
+
+def print_runs(curves):
+    """Peak, onset and end of every slow-loading run."""
+    print("\n| family | mesh | rate | peak | at | 0.02 below it at | ratio at 10 % |\n" + "|---" * 7 + "|")
+    for fam in ls.FAMILIES:
+        for m, _ in es.MESHES:
+            for step, label, _ in RATES:
+                c = curves.get(es.case_name(fam, m, 0, step))
+                if c and es.reached_end(c):
+                    r, e = c["stress_ratio"], c["axial_strain"]
+                    i = int(np.argmax(r))
+                    print(f"| {fam[0]} | {m} | {label} | {r[i]:.4f} | {100 * e[i]:.4g} % | {100 * es.drop_at(c):.4g} % "
+                          f"| {r[-1]:.3f} |")
+
+
+def print_rates_and_schemes(curves):
+    """The two rates against each other, and each against the relaxed steps on 2x4."""
+    print("\n| family | mesh | curve | against | largest difference 0.5-5 % | spread after the peak: mean | largest |\n"
+          + "|---" * 7 + "|")
+    for fam in ls.FAMILIES:
+        for m, _ in es.MESHES:
+            slow = {label: curves[es.case_name(fam, m, 0, s)] for s, label, _ in RATES
+                    if es.finished(curves, es.case_name(fam, m, 0, s))}
+            if len(slow) == 2:
+                print(f"| {fam[0]} | {m} | slow 0.125 /s | slow 0.25 /s | {compare(slow['0.125 /s'], slow['0.25 /s'])} |")
+            for label, c in slow.items():
+                for step, slabel, _ in ls.STEPS:
+                    if es.finished(curves, es.case_name(fam, m, 0, step)):
+                        print(f"| {fam[0]} | {m} | slow {label} | relaxed {slabel}, K = 0 "
+                              f"| {compare(c, ls.member_curve(curves, fam, m, 0, step))} |")
+                    ks = ls.members(curves, fam, m, step)
+                    if len(ks) >= 2:
+                        print(f"| {fam[0]} | {m} | slow {label} | relaxed {slabel}, mean of K = "
+                              f"{', '.join(map(str, ks))} | {compare(c, ls.mean_of(curves, fam, m, ks, step))} |")
+
+
+def print_mesh_spread(curves):
+    """The spread over 2x4 and 4x8 of member K = 0, slow loading at 0.25 /s and relaxed at every step."""
+    pair = [m for m, _ in es.MESHES[:2]]
+    print("\n| curves (K = 0, 2x4 and 4x8) | local: mean | largest | R = 5 mm: mean | largest | against local |\n"
+          + "|---" * 6 + "|")
+    rows = [(f"slow loading {label}", s) for s, label, _ in RATES] + [(f"relaxed {label}", s) for s, label, _ in ls.STEPS]
+    for label, step in rows:
+        if not all(es.finished(curves, es.case_name(f, m, 0, step)) for f in ls.FAMILIES for m in pair):
+            continue
+        local, elastic = (ls.spread_of({m: ls.member_curve(curves, f, m, 0, step) for m in pair})
+                          for f in ls.FAMILIES)
+        print(f"| {label} | {ls.pct(local)} | {ls.pct(elastic)} | {elastic[1] / local[1]:.2f}, {elastic[2] / local[2]:.2f} |")
+
+
+def plot(curves):
+    """results/slow_loading.png: per family the slow-loading runs and the relaxed 2x4 K = 0 runs."""
+    fig, axs = plt.subplots(1, len(ls.FAMILIES), figsize=(6 * len(ls.FAMILIES), 4.5), sharey=True)
+    for ax, fam in zip(axs, ls.FAMILIES):
+        for step, label, colour in ls.STEPS:
+            c = curves.get(es.case_name(fam, "2x4", 0, step))
+            if c:
+                ax.plot(100 * np.array(c["axial_strain"]), c["stress_ratio"], color=colour, lw=0.9,
+                        label=f"2x4 relaxed steps of {label}")
+        for step, label, colour in RATES:
+            for m, style in (("2x4", "-"), ("4x8", "--")):
+                c = curves.get(es.case_name(fam, m, 0, step))
+                if c and es.reached_end(c):
+                    ax.plot(100 * np.array(c["axial_strain"]), c["stress_ratio"], style, color=colour, lw=2,
+                            label=f"{m} slow loading {label}")
+        ax.set_xlim(3, 10)
+        ax.set_ylim(0.24, 0.43)
+        ax.set_title(f"{fam[0]}, member K = 0", fontsize=10)
+        ax.set_xlabel("axial strain (%)")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    axs[0].set_ylabel("stress ratio (σ1 − σ2)/(σ1 + σ2)")
+    fig.suptitle("[LBS] biaxial: slow loading against relaxed steps")
+    fig.tight_layout()
+    fig.savefig(os.path.join(analyse.results, "slow_loading.png"), dpi=120)
+
+
+def main():
+    curves = es.stored_curves()
+    for step, _, _ in ls.STEPS[1:]:
+        curves.update(es.stored_curves(ls.CURVES, step))
+    for step, _, _ in RATES:
+        curves.update(es.stored_curves(CURVES, step))
+    plot(curves)
+    print_runs(curves)
+    print_rates_and_schemes(curves)
+    print_mesh_spread(curves)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -6,7 +6,7 @@ to rest, whose drop moves with the step (load_step_study.py). Here member
 K = 0 of the local and the local elastic R = 5 mm families runs by fe2dem's
 default quasi-static scheme with RVEs, slow loading at a nominal strain rate
 (run.sh CASE_quarter_slRATE: 0.125 % rows), on 2x4 at 0.25 and 0.125 /s and
-on 4x8 at 0.25 /s.
+on 4x8 and 8x16 one point at 0.25 /s.
 
 Usage: slow_loading_study.py   (Debian's python3 with numpy)
 
@@ -21,8 +21,9 @@ and results/load_step_curves.csv (the relaxed steps), and prints:
 - per family on 2x4 the slow-loading run at each rate against the relaxed
   steps' member K = 0 and mean of K = 0-3 at 0.125, 0.0625 and 0.03125 %
   (where run), in the same two measures;
-- the spread over 2x4 and 4x8 of the slow-loading runs at 0.25 /s, local
-  against R = 5 mm, beside the relaxed-step K = 0 pair at each step;
+- the spread of member K = 0 over 2x4 and 4x8 and over the three meshes
+  (8x16 one point at 0.25 /s), slow loading and relaxed steps, local
+  against R = 5 mm;
 and draws results/slow_loading.png.
 """
 import os
@@ -95,17 +96,19 @@ def print_rates_and_schemes(curves):
 
 
 def print_mesh_spread(curves):
-    """The spread over 2x4 and 4x8 of member K = 0, slow loading at 0.25 /s and relaxed at every step."""
-    pair = [m for m, _ in es.MESHES[:2]]
-    print("\n| curves (K = 0, 2x4 and 4x8) | local: mean | largest | R = 5 mm: mean | largest | against local |\n"
-          + "|---" * 6 + "|")
+    """The spread over 2x4 and 4x8, and over the three meshes, of member K = 0: slow loading at each
+    rate and relaxed steps at each load step, where every mesh of the set ran it in both families."""
+    print("\n| curves (K = 0) | meshes | local: mean | largest | R = 5 mm: mean | largest | against local |\n"
+          + "|---" * 7 + "|")
     rows = [(f"slow loading {label}", s) for s, label, _ in RATES] + [(f"relaxed {label}", s) for s, label, _ in ls.STEPS]
-    for label, step in rows:
-        if not all(es.finished(curves, es.case_name(f, m, 0, step)) for f in ls.FAMILIES for m in pair):
-            continue
-        local, elastic = (ls.spread_of({m: ls.member_curve(curves, f, m, 0, step) for m in pair})
-                          for f in ls.FAMILIES)
-        print(f"| {label} | {ls.pct(local)} | {ls.pct(elastic)} | {elastic[1] / local[1]:.2f}, {elastic[2] / local[2]:.2f} |")
+    for meshes in ([m for m, _ in es.MESHES[:2]], [m for m, _ in es.MESHES]):
+        for label, step in rows:
+            if not all(es.finished(curves, es.case_name(f, m, 0, step)) for f in ls.FAMILIES for m in meshes):
+                continue
+            local, elastic = (ls.spread_of({m: ls.member_curve(curves, f, m, 0, step) for m in meshes})
+                              for f in ls.FAMILIES)
+            print(f"| {label} | {', '.join(meshes)} | {ls.pct(local)} | {ls.pct(elastic)} "
+                  f"| {elastic[1] / local[1]:.2f}, {elastic[2] / local[2]:.2f} |")
 
 
 def plot(curves):
@@ -118,7 +121,7 @@ def plot(curves):
                 ax.plot(100 * np.array(c["axial_strain"]), c["stress_ratio"], color=colour, lw=0.9,
                         label=f"2x4 relaxed steps of {label}")
         for step, label, colour in RATES:
-            for m, style in (("2x4", "-"), ("4x8", "--")):
+            for m, style in (("2x4", "-"), ("4x8", "--"), ("8x16, one point", ":")):
                 c = curves.get(es.case_name(fam, m, 0, step))
                 if c and es.reached_end(c):
                     ax.plot(100 * np.array(c["axial_strain"]), c["stress_ratio"], style, color=colour, lw=2,

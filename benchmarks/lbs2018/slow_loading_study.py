@@ -23,9 +23,12 @@ and results/load_step_curves.csv (the relaxed steps), and prints:
   (where run), in the same two measures;
 - the spread of member K = 0 over 2x4 and 4x8 and over the three meshes
   (8x16 one point at 0.25 /s), slow loading and relaxed steps, local
-  against R = 5 mm;
+  against R = 5 mm, to 10 % or, where a slow-loading run of the set
+  stopped before (an RVE failed; its rows are stored too), to that stop;
 and draws results/slow_loading.png.
 """
+import csv
+import datetime
 import os
 import sys
 
@@ -43,6 +46,34 @@ import load_step_study as ls  # noqa: E402  (the relaxed steps at every load ste
 RATES = [("_quarter_sl0.25", "0.25 /s", "tab:red"), ("_quarter_sl0.125", "0.125 /s", "tab:purple")]
 CURVES = os.path.join(analyse.results, "slow_loading_curves.csv")
 PRE_PEAK = 0.05  # the rows compared before the peak: 0.5 % to 5 %
+
+
+def stopped(case):
+    """Whether run.sh recorded @p case as ended without reaching 10 % (results/runs.csv: completed 0)
+    after the last write of its runs/CASE/summary.csv, i.e. that row is this run's and not a rerun's."""
+    row = analyse.run_info().get(case)
+    path = os.path.join(analyse.runs, case, "summary.csv")
+    if not row or row["completed"] != "0" or not os.path.exists(path):
+        return False
+    ended = datetime.datetime.strptime(row["date"], "%Y-%m-%dT%H:%M:%SZ").replace(tzinfo=datetime.timezone.utc)
+    return ended.timestamp() >= os.path.getmtime(path) - 1.0
+
+
+def store_stopped_runs():
+    """Add to CURVES the slow-loading runs that stopped before 10 % (es.stored_curves keeps only
+    finished ones): their rows up to the stop, so that the spreads to a common end regenerate."""
+    names = [es.case_name(f, m, 0, s) for f in ls.FAMILIES for m, _ in es.MESHES for s, _, _ in RATES]
+    ran = {c: analyse.curve(c) for c in names if stopped(c)}
+    if not ran:
+        return
+    rows = list(csv.DictReader(open(CURVES))) if os.path.exists(CURVES) else []
+    rows = [r for r in rows if r["case"] not in ran]
+    rows += [{"case": c, "axial_strain": f"{e:.6g}", "stress_ratio": f"{r:.6g}"}
+             for c, v in ran.items() for e, r in zip(v["axial_strain"], v["stress_ratio"])]
+    with open(CURVES, "w", newline="") as fh:
+        w = csv.DictWriter(fh, ["case", "axial_strain", "stress_ratio"])
+        w.writeheader()
+        w.writerows(sorted(rows, key=lambda r: r["case"]))  # stable: each case's rows stay in order
 
 
 def pre_peak_difference(a, b):
@@ -67,11 +98,12 @@ def print_runs(curves):
         for m, _ in es.MESHES:
             for step, label, _ in RATES:
                 c = curves.get(es.case_name(fam, m, 0, step))
-                if c and es.reached_end(c):
+                if c:
                     r, e = c["stress_ratio"], c["axial_strain"]
                     i = int(np.argmax(r))
+                    end = f"{r[-1]:.3f}" if es.reached_end(c) else f"stopped after {100 * e[-1]:.4g} % ({r[-1]:.3f})"
                     print(f"| {fam[0]} | {m} | {label} | {r[i]:.4f} | {100 * e[i]:.4g} % | {100 * es.drop_at(c):.4g} % "
-                          f"| {r[-1]:.3f} |")
+                          f"| {end} |")
 
 
 def print_rates_and_schemes(curves):
@@ -95,19 +127,32 @@ def print_rates_and_schemes(curves):
                               f"{', '.join(map(str, ks))} | {compare(c, ls.mean_of(curves, fam, m, ks, step))} |")
 
 
+def up_to(curve, end):
+    """@p curve's rows up to axial strain @p end."""
+    n = sum(1 for e in curve["axial_strain"] if e <= end + 1e-9)
+    return {k: curve[k][:n] for k in ("axial_strain", "stress_ratio")}
+
+
 def print_mesh_spread(curves):
     """The spread over 2x4 and 4x8, and over the three meshes, of member K = 0: slow loading at each
-    rate and relaxed steps at each load step, where every mesh of the set ran it in both families."""
-    print("\n| curves (K = 0) | meshes | local: mean | largest | R = 5 mm: mean | largest | against local |\n"
-          + "|---" * 7 + "|")
+    rate and relaxed steps at each load step, where every mesh of the set ran it in both families.
+    Where a slow-loading run of the set stopped before 10 %, every row of the set is taken to the
+    earliest such stop, like for like."""
+    print("\n| curves (K = 0) | meshes | to | local: mean | largest | R = 5 mm: mean | largest | against local |\n"
+          + "|---" * 8 + "|")
     rows = [(f"slow loading {label}", s) for s, label, _ in RATES] + [(f"relaxed {label}", s) for s, label, _ in ls.STEPS]
     for meshes in ([m for m, _ in es.MESHES[:2]], [m for m, _ in es.MESHES]):
+        have = lambda step: all(es.case_name(f, m, 0, step) in curves for f in ls.FAMILIES for m in meshes)  # noqa: E731
+        ends = [curves[es.case_name(f, m, 0, s)]["axial_strain"][-1] for s, _, _ in RATES if have(s)
+                for f in ls.FAMILIES for m in meshes]
+        end = min(ends, default=0.10)
         for label, step in rows:
-            if not all(es.finished(curves, es.case_name(f, m, 0, step)) for f in ls.FAMILIES for m in meshes):
+            if not have(step) or any(curves[es.case_name(f, m, 0, step)]["axial_strain"][-1] < end - 1e-9
+                                     for f in ls.FAMILIES for m in meshes):
                 continue
-            local, elastic = (ls.spread_of({m: ls.member_curve(curves, f, m, 0, step) for m in meshes})
+            local, elastic = (ls.spread_of({m: up_to(ls.member_curve(curves, f, m, 0, step), end) for m in meshes})
                               for f in ls.FAMILIES)
-            print(f"| {label} | {', '.join(meshes)} | {ls.pct(local)} | {ls.pct(elastic)} "
+            print(f"| {label} | {', '.join(meshes)} | {100 * end:.4g} % | {ls.pct(local)} | {ls.pct(elastic)} "
                   f"| {elastic[1] / local[1]:.2f}, {elastic[2] / local[2]:.2f} |")
 
 
@@ -123,7 +168,7 @@ def plot(curves):
         for step, label, colour in RATES:
             for m, style in (("2x4", "-"), ("4x8", "--"), ("8x16, one point", ":")):
                 c = curves.get(es.case_name(fam, m, 0, step))
-                if c and es.reached_end(c):
+                if c:
                     ax.plot(100 * np.array(c["axial_strain"]), c["stress_ratio"], style, color=colour, lw=2,
                             label=f"{m} slow loading {label}")
         ax.set_xlim(3, 10)
@@ -142,6 +187,7 @@ def main():
     curves = es.stored_curves()
     for step, _, _ in ls.STEPS[1:]:
         curves.update(es.stored_curves(ls.CURVES, step))
+    store_stopped_runs()
     for step, _, _ in RATES:
         curves.update(es.stored_curves(CURVES, step))
     plot(curves)

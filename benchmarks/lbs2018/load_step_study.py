@@ -222,10 +222,16 @@ def plot(curves):
     fig.savefig(os.path.join(analyse.results, "load_step_ensembles.png"), dpi=120)
 
 
-def main():
+def curves_at_every_step():
+    """Every member's curve at every load step of STEPS (es.stored_curves of each step's file)."""
     curves = es.stored_curves()
     for step, _, _ in STEPS[1:]:
         curves.update(es.stored_curves(CURVES, step))
+    return curves
+
+
+def main():
+    curves = curves_at_every_step()
     plot(curves)
     print_members(curves)
     print_onsets(curves)

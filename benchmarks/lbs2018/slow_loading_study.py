@@ -184,9 +184,7 @@ def plot(curves):
 
 
 def main():
-    curves = es.stored_curves()
-    for step, _, _ in ls.STEPS[1:]:
-        curves.update(es.stored_curves(ls.CURVES, step))
+    curves = ls.curves_at_every_step()
     store_stopped_runs()
     for step, _, _ in RATES:
         curves.update(es.stored_curves(CURVES, step))

@@ -69,10 +69,11 @@ def case_name(family, mesh, k, step="_quarter"):
     return f"{prefix}_{dict(MESHES)[mesh]}{suffix}{step}" + (f"_p{k}" if k else "")
 
 
-def stored_curves(path=CURVES, step="_quarter"):
+def stored_curves(path=CURVES, step="_quarter", ended=None):
     """{case: {axial_strain, stress_ratio}} of every member at load step @p step: the file @p path,
     updated with the finished members that runs/ holds (and written back, so that a partial runs/
-    never drops a stored member)."""
+    never drops a stored member). @p ended(case): also store that case's run if it ended before 10 %
+    (default: none is)."""
     out = {}
     if os.path.exists(path):
         for r in csv.DictReader(open(path)):
@@ -81,7 +82,8 @@ def stored_curves(path=CURVES, step="_quarter"):
             v["stress_ratio"].append(float(r["stress_ratio"]))
     names = [case_name(f, m, k, step) for f in FAMILIES for m, _ in MESHES for k in MEMBERS]
     # Only runs that reached 10 %: a run still under way must not be stored as a member.
-    ran = {c: v for c, v in ((c, analyse.curve(c)) for c in names) if v and reached_end(v)}
+    ran = {c: v for c, v in ((c, analyse.curve(c)) for c in names)
+           if v and (reached_end(v) or (ended is not None and ended(c)))}
     if ran:
         out.update({c: {k: ran[c][k] for k in ("axial_strain", "stress_ratio")} for c in ran})
         with open(path, "w", newline="") as fh:

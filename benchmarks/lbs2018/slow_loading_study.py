@@ -27,7 +27,6 @@ and results/load_step_curves.csv (the relaxed steps), and prints:
   stopped before (an RVE failed; its rows are stored too), to that stop;
 and draws results/slow_loading.png.
 """
-import csv
 import datetime
 import os
 import sys
@@ -57,23 +56,6 @@ def stopped(case):
         return False
     ended = datetime.datetime.strptime(row["date"], "%Y-%m-%dT%H:%M:%SZ").replace(tzinfo=datetime.timezone.utc)
     return ended.timestamp() >= os.path.getmtime(path) - 1.0
-
-
-def store_stopped_runs():
-    """Add to CURVES the slow-loading runs that stopped before 10 % (es.stored_curves keeps only
-    finished ones): their rows up to the stop, so that the spreads to a common end regenerate."""
-    names = [es.case_name(f, m, 0, s) for f in ls.FAMILIES for m, _ in es.MESHES for s, _, _ in RATES]
-    ran = {c: analyse.curve(c) for c in names if stopped(c)}
-    if not ran:
-        return
-    rows = list(csv.DictReader(open(CURVES))) if os.path.exists(CURVES) else []
-    rows = [r for r in rows if r["case"] not in ran]
-    rows += [{"case": c, "axial_strain": f"{e:.6g}", "stress_ratio": f"{r:.6g}"}
-             for c, v in ran.items() for e, r in zip(v["axial_strain"], v["stress_ratio"])]
-    with open(CURVES, "w", newline="") as fh:
-        w = csv.DictWriter(fh, ["case", "axial_strain", "stress_ratio"])
-        w.writeheader()
-        w.writerows(sorted(rows, key=lambda r: r["case"]))  # stable: each case's rows stay in order
 
 
 def pre_peak_difference(a, b):
@@ -107,7 +89,7 @@ def print_runs(curves):
 
 
 def print_rates_and_schemes(curves):
-    """The two rates against each other, and each against the relaxed steps on 2x4."""
+    """The two rates against each other, and each against the relaxed steps on the same mesh."""
     print("\n| family | mesh | curve | against | largest difference 0.5-5 % | spread after the peak: mean | largest |\n"
           + "|---" * 7 + "|")
     for fam in ls.FAMILIES:
@@ -185,9 +167,8 @@ def plot(curves):
 
 def main():
     curves = ls.curves_at_every_step()
-    store_stopped_runs()
-    for step, _, _ in RATES:
-        curves.update(es.stored_curves(CURVES, step))
+    for step, _, _ in RATES:  # with the runs that stopped early (an RVE failed), to their stop
+        curves.update(es.stored_curves(CURVES, step, ended=stopped))
     plot(curves)
     print_runs(curves)
     print_rates_and_schemes(curves)

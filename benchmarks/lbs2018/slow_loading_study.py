@@ -74,18 +74,20 @@ def compare(a, b):
 
 
 def print_runs(curves):
-    """Peak, onset and end of every slow-loading run."""
-    print("\n| family | mesh | rate | peak | at | 0.02 below it at | ratio at 10 % |\n" + "|---" * 7 + "|")
+    """Peak, onset and end of every slow-loading run, member by member."""
+    print("\n| family | mesh | rate | K | peak | at | 0.02 below it at | ratio at 10 % |\n" + "|---" * 8 + "|")
     for fam in ls.FAMILIES:
         for m, _ in es.MESHES:
             for step, label, _ in RATES:
-                c = curves.get(es.case_name(fam, m, 0, step))
-                if c:
-                    r, e = c["stress_ratio"], c["axial_strain"]
-                    i = int(np.argmax(r))
-                    end = f"{r[-1]:.3f}" if es.reached_end(c) else f"stopped after {100 * e[-1]:.4g} % ({r[-1]:.3f})"
-                    print(f"| {fam[0]} | {m} | {label} | {r[i]:.4f} | {100 * e[i]:.4g} % | {100 * es.drop_at(c):.4g} % "
-                          f"| {end} |")
+                for k in es.MEMBERS:
+                    c = curves.get(es.case_name(fam, m, k, step))
+                    if c:
+                        r, e = c["stress_ratio"], c["axial_strain"]
+                        i = int(np.argmax(r))
+                        end = (f"{r[-1]:.3f}" if es.reached_end(c)
+                               else f"stopped after {100 * e[-1]:.4g} % ({r[-1]:.3f})")
+                        print(f"| {fam[0]} | {m} | {label} | {k} | {r[i]:.4f} | {100 * e[i]:.4g} % "
+                              f"| {100 * es.drop_at(c):.4g} % | {end} |")
 
 
 def print_rates_and_schemes(curves):
@@ -115,27 +117,47 @@ def up_to(curve, end):
     return {k: curve[k][:n] for k in ("axial_strain", "stress_ratio")}
 
 
+def ran_by_all(curves, step, meshes):
+    """The members K that every mesh of @p meshes ran at @p step in both families (to 10 % or, slow
+    loading, to a stop: curves holds no run still under way)."""
+    return [k for k in es.MEMBERS
+            if all(es.case_name(f, m, k, step) in curves for f in ls.FAMILIES for m in meshes)]
+
+
+def mean_up_to(curves, fam, mesh, ks, step, end):
+    """The mean of @p fam's members @p ks on @p mesh at @p step, on the 0.125 % rows, to @p end."""
+    runs = [up_to(ls.member_curve(curves, fam, mesh, k, step), end) for k in ks]
+    return {"axial_strain": runs[0]["axial_strain"],
+            "stress_ratio": list(np.mean([c["stress_ratio"] for c in runs], axis=0))}
+
+
 def print_mesh_spread(curves):
-    """The spread over 2x4 and 4x8, and over the three meshes, of member K = 0: slow loading at each
-    rate and relaxed steps at each load step, where every mesh of the set ran it in both families.
-    Where a slow-loading run of the set stopped before 10 %, every row of the set is taken to the
-    earliest such stop, like for like."""
-    print("\n| curves (K = 0) | meshes | to | local: mean | largest | R = 5 mm: mean | largest | against local |\n"
-          + "|---" * 8 + "|")
-    rows = [(f"slow loading {label}", s) for s, label, _ in RATES] + [(f"relaxed {label}", s) for s, label, _ in ls.STEPS]
+    """The spread over 2x4 and 4x8, and over the three meshes, of each member K that every mesh ran
+    by slow loading, and of the means of those members (two or more): slow loading at each rate,
+    and relaxed steps at each load step over the same members. Where a slow-loading run of the set
+    stopped before 10 %, every row of the set is taken to the earliest such stop, like for like."""
+    print("\n| curves | meshes | members | to | local: mean | largest | R = 5 mm: mean | largest | against local |\n"
+          + "|---" * 9 + "|")
     for meshes in ([m for m, _ in es.MESHES[:2]], [m for m, _ in es.MESHES]):
-        have = lambda step: all(es.case_name(f, m, 0, step) in curves for f in ls.FAMILIES for m in meshes)  # noqa: E731
-        ends = [curves[es.case_name(f, m, 0, s)]["axial_strain"][-1] for s, _, _ in RATES if have(s)
-                for f in ls.FAMILIES for m in meshes]
-        end = min(ends, default=0.10)
-        for label, step in rows:
-            if not have(step) or any(curves[es.case_name(f, m, 0, step)]["axial_strain"][-1] < end - 1e-9
-                                     for f in ls.FAMILIES for m in meshes):
+        for rate, rate_label, _ in RATES:
+            ks = ran_by_all(curves, rate, meshes)
+            if not ks:
                 continue
-            local, elastic = (ls.spread_of({m: up_to(ls.member_curve(curves, f, m, 0, step), end) for m in meshes})
-                              for f in ls.FAMILIES)
-            print(f"| {label} | {', '.join(meshes)} | {100 * end:.4g} % | {ls.pct(local)} | {ls.pct(elastic)} "
-                  f"| {elastic[1] / local[1]:.2f}, {elastic[2] / local[2]:.2f} |")
+            end = min(curves[es.case_name(f, m, k, rate)]["axial_strain"][-1]
+                      for f in ls.FAMILIES for m in meshes for k in ks)
+            sets = [[k] for k in ks] + ([ks] if len(ks) >= 2 else [])
+            rows = [(f"slow loading {rate_label}", rate)] + [(f"relaxed {label}", s) for s, label, _ in ls.STEPS]
+            for members in sets:
+                for label, step in rows:
+                    if not set(members) <= set(ran_by_all(curves, step, meshes)) or any(
+                            curves[es.case_name(f, m, k, step)]["axial_strain"][-1] < end - 1e-9
+                            for f in ls.FAMILIES for m in meshes for k in members):
+                        continue
+                    local, elastic = (ls.spread_of({m: mean_up_to(curves, f, m, members, step, end) for m in meshes})
+                                      for f in ls.FAMILIES)
+                    what = f"K = {members[0]}" if len(members) == 1 else f"mean of K = {', '.join(map(str, members))}"
+                    print(f"| {label} | {', '.join(meshes)} | {what} | {100 * end:.4g} % | {ls.pct(local)} "
+                          f"| {ls.pct(elastic)} | {elastic[1] / local[1]:.2f}, {elastic[2] / local[2]:.2f} |")
 
 
 def plot(curves):

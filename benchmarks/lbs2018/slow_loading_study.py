@@ -25,8 +25,14 @@ and results/load_step_curves.csv (the relaxed steps), and prints:
   (8x16 one point at 0.25 /s), slow loading and relaxed steps, local
   against R = 5 mm, to 10 % or, where a slow-loading run of the set
   stopped before (an RVE failed; its rows are stored too), to that stop;
+  from session 55 also of each member K that every mesh ran, and of the
+  means of those members;
+- every run's half-share band width (band_width.py, the measure of the
+  ensembles) over 7.5-8.5 % and 7.5-10 %, kept in
+  results/slow_loading_widths.csv;
 and draws results/slow_loading.png.
 """
+import csv
 import datetime
 import os
 import sys
@@ -39,12 +45,18 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import analyse  # noqa: E402
+import band_study  # noqa: E402  (the shear strain increment of a run over an interval)
+import band_width as bw  # noqa: E402  (the half-share width)
 import ensemble_study as es  # noqa: E402  (names, members, means, onsets)
 import load_step_study as ls  # noqa: E402  (the relaxed steps at every load step)
 
 RATES = [("_quarter_sl0.25", "0.25 /s", "tab:red"), ("_quarter_sl0.125", "0.125 /s", "tab:purple")]
 CURVES = os.path.join(analyse.results, "slow_loading_curves.csv")
 PRE_PEAK = 0.05  # the rows compared before the peak: 0.5 % to 5 %
+WIDTHS = os.path.join(analyse.results, "slow_loading_widths.csv")
+# the half-share width's intervals of axial strain: band_study's 7.5-10 % and, like for like with
+# the local 8x16 run that stopped at 8.5 %, 7.5-8.5 %
+WIDTH_INTERVALS = [(0.075, 0.085), (0.075, 0.10)]
 
 
 def stopped(case):
@@ -160,6 +172,54 @@ def print_mesh_spread(curves):
                           f"| {ls.pct(elastic)} | {elastic[1] / local[1]:.2f}, {elastic[2] / local[2]:.2f} |")
 
 
+def stored_widths(curves):
+    """{(case, from, to): half-share width [m]} of every slow-loading run of @p curves (ended) over
+    each WIDTH_INTERVALS it reached: WIDTHS, updated from runs/CASE/history.h5 (and written back)."""
+    out = {}
+    if os.path.exists(WIDTHS):
+        out = {(r["case"], float(r["from"]), float(r["to"])): float(r["half_share_width_m"])
+               for r in csv.DictReader(open(WIDTHS))}
+    fresh = [c for c in curves if "_sl" in c and os.path.exists(os.path.join(analyse.runs, c, "history.h5"))]
+    for c in fresh:
+        eps, ratio, _ = band_study.stage2(c)
+        for a, b in WIDTH_INTERVALS:
+            if eps[-1] >= b - 1e-9:
+                _, g = band_study.increment(c, a, b)
+                out[(c, a, b)] = bw.half_share_width(g, band_study.HEIGHT, bw.coulomb_angle(ratio.max()))
+    if fresh:
+        with open(WIDTHS, "w", newline="") as fh:
+            w = csv.writer(fh)
+            w.writerow(["case", "from", "to", "half_share_width_m"])
+            w.writerows([c, f"{a:g}", f"{b:g}", f"{v:.6g}"] for (c, a, b), v in sorted(out.items()))
+    return out
+
+
+def print_widths(widths):
+    """Per family, rate and mesh the members' half-share widths over each of WIDTH_INTERVALS, their
+    mean, and the range of the meshes' means (over the meshes that have the interval)."""
+    print("\n| family | rate | mesh | element | "
+          + " | ".join(f"half share {100 * a:g}-{100 * b:g} %: K = ... (mm) | mean" for a, b in WIDTH_INTERVALS)
+          + " |\n" + "|---" * (4 + 2 * len(WIDTH_INTERVALS)) + "|")
+    for fam in ls.FAMILIES:
+        for step, label, _ in RATES:
+            means = {iv: [] for iv in WIDTH_INTERVALS}
+            for m, _ in es.MESHES:
+                cells, any_run = [], False
+                for a, b in WIDTH_INTERVALS:
+                    v = [(k, 1e3 * widths[(es.case_name(fam, m, k, step), a, b)]) for k in es.MEMBERS
+                         if (es.case_name(fam, m, k, step), a, b) in widths]
+                    any_run = any_run or bool(v)
+                    if v:
+                        means[(a, b)].append(np.mean([x for _, x in v]))
+                    cells += [" / ".join(f"{x:.1f} ({k})" for k, x in v) or "-",
+                              f"{np.mean([x for _, x in v]):.1f}" if v else "-"]
+                if any_run:
+                    print(f"| {fam[0]} | {label} | {m} | {es.ELEMENT_MM[m]:g} mm | " + " | ".join(cells) + " |")
+            ranges = [f"{max(v) - min(v):.1f} mm over {len(v)} meshes" if len(v) > 1 else "-" for v in means.values()]
+            if any(len(v) > 1 for v in means.values()):
+                print(f"| {fam[0]} | {label} | range of the means | | " + " | | ".join(ranges) + " | |")
+
+
 def plot(curves):
     """results/slow_loading.png: per family the slow-loading runs and the relaxed 2x4 K = 0 runs."""
     fig, axs = plt.subplots(1, len(ls.FAMILIES), figsize=(6 * len(ls.FAMILIES), 4.5), sharey=True)
@@ -195,6 +255,7 @@ def main():
     print_runs(curves)
     print_rates_and_schemes(curves)
     print_mesh_spread(curves)
+    print_widths(stored_widths(curves))
     return 0
 
 

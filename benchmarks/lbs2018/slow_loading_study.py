@@ -15,6 +15,8 @@ so that the tables regenerate without runs/), results/ensemble_curves.csv
 and results/load_step_curves.csv (the relaxed steps), and prints:
 - every slow-loading run's peak (ratio, axial strain), onset (the row 0.02
   below the peak) and ratio at 10 %;
+- per family, mesh and rate the spread of the members K after the peak of
+  their mean, beside the relaxed members' at 0.125 % (the same K);
 - per family and mesh the two rates against each other: the largest
   relative difference of the stress ratio up to 5 % and the spread measure
   of the criterion ((max - min)/mean from the peak of their mean to 10 %);
@@ -100,6 +102,27 @@ def print_runs(curves):
                                else f"stopped after {100 * e[-1]:.4g} % ({r[-1]:.3f})")
                         print(f"| {fam[0]} | {m} | {label} | {k} | {r[i]:.4f} | {100 * e[i]:.4g} % "
                               f"| {100 * es.drop_at(c):.4g} % | {end} |")
+
+
+def print_member_spread(curves):
+    """Per family, mesh and rate with two members or more: their spread after the peak of their mean
+    (to the earliest end of a member), beside the relaxed members' at 0.125 % over the same members."""
+    print("\n| family | mesh | rate | members | to | slow loading: mean | largest | relaxed 0.125 %, same members: "
+          "mean | largest |\n" + "|---" * 9 + "|")
+    for fam in ls.FAMILIES:
+        for m, _ in es.MESHES:
+            for step, label, _ in RATES:
+                ks = [k for k in es.MEMBERS if es.case_name(fam, m, k, step) in curves]
+                if len(ks) < 2:
+                    continue
+                end = min(curves[es.case_name(fam, m, k, step)]["axial_strain"][-1] for k in ks)
+                slow = ls.spread_of({k: up_to(curves[es.case_name(fam, m, k, step)], end) for k in ks})
+                relaxed = "- | -"
+                if all(es.finished(curves, es.case_name(fam, m, k, ls.COARSE)) for k in ks):
+                    relaxed = ls.pct(ls.spread_of({k: up_to(curves[es.case_name(fam, m, k, ls.COARSE)], end)
+                                                   for k in ks}))
+                print(f"| {fam[0]} | {m} | {label} | {', '.join(map(str, ks))} | {100 * end:.4g} % "
+                      f"| {ls.pct(slow)} | {relaxed} |")
 
 
 def print_rates_and_schemes(curves):
@@ -253,6 +276,7 @@ def main():
         curves.update(es.stored_curves(CURVES, step, ended=stopped))
     plot(curves)
     print_runs(curves)
+    print_member_spread(curves)
     print_rates_and_schemes(curves)
     print_mesh_spread(curves)
     print_widths(stored_widths(curves))

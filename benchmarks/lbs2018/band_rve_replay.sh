@@ -11,7 +11,9 @@
 # refreshed from runs/ when that run is there, so the replay needs no runs/),
 # plus four rows that continue its last increment. Each row is reached in the
 # macro run's 5 ms (0.125 % at 0.25 /s) or in 10 ms; F moves linearly between
-# rows ('Table row time'). One rank each; output in runs/band_rve_replay/CASE/.
+# rows ('Table row time'). ip0_path_5ms_rounded: the same rows rounded to 10
+# significant digits (how sensitive the failure is to the path: README).
+# One rank each; output in runs/band_rve_replay/CASE/.
 # Prints, per case, the last step rve.csv holds and the error, if any.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -33,15 +35,16 @@ import sys
 import numpy as np
 a = np.loadtxt(sys.argv[1])
 rows = np.vstack([a] + [a[-1] + k * (a[-1] - a[-2]) for k in range(1, 5)])
-np.savetxt(sys.argv[2], rows, fmt="%.10g",
+np.savetxt(sys.argv[2], rows, fmt="%.17g",
            header="F11 F12 F21 F22 of IP 0, runs/mesh_8x16_op_quarter_sl0.25/history.h5 steps 1-78, "
                   "then 4 rows continuing the last increment (band_rve_replay.sh)")
 EOF
 fi
 [[ -f $path ]] || { echo "band_rve_replay.sh: neither $history nor $path" >&2; exit 1; }
-"$python" - "$out" <<'EOF'
+"$python" - "$out" "$path" <<'EOF'
 import sys
 import numpy as np
+np.savetxt(f"{sys.argv[1]}/ip0_rounded.txt", np.loadtxt(sys.argv[2]), fmt="%.10g")
 a = 1 + 0.005 * np.arange(1, 101)
 np.savetxt(f"{sys.argv[1]}/pure_shear.txt", np.c_[a, 0 * a, 0 * a, 1 / a], fmt="%.10g")
 g = -0.005 * np.arange(1, 101)
@@ -84,6 +87,7 @@ EOF
 echo "| case | row time | last step in rve.csv | end |"
 echo "|---|---|---|---|"
 run_case ip0_path_5ms "$path" packing 0.005
+run_case ip0_path_5ms_rounded "$out/ip0_rounded.txt" packing 0.005
 run_case ip0_path_10ms "$path" packing 0.01
 run_case pure_shear_1_per_s "$out/pure_shear.txt" "isotropic stage" 0.005
 run_case simple_shear_1_per_s "$out/simple_shear.txt" "isotropic stage" 0.005

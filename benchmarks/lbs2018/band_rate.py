@@ -41,29 +41,26 @@ ROW = 0.00125       # axial strain of one load step of stage 2 (run.sh _quarter)
 D_MEAN, RHO, P = 3.67e-4, 2000.0, 1.5e5  # lbs_ref: mean diameter [m], areal density [kg/m^2], pressure [N/m]
 
 
-def largest_stretch(path, dataset):
-    """The largest principal stretch of @p dataset (F or F_nonlocal) of history.h5 @p path over the
-    IPs and steps: how far the most deformed RVE was taken."""
+def read_history(path):
+    """(axial strain of each step, {dataset: F, steps x IPs x 2 x 2}) of history.h5 @p path, for the
+    datasets F and, in a nonlocal run, F_nonlocal."""
     with h5py.File(path, "r") as f:
-        F = f[dataset][:].reshape(f[dataset].shape[0], -1, 2, 2)
+        return f["axial_strain"][:], {d: f[d][:].reshape(f[d].shape[0], -1, 2, 2)
+                                      for d in ("F", "F_nonlocal") if d in f}
+
+
+def largest_stretch(F):
+    """The largest principal stretch of @p F (steps x IPs x 2 x 2) over the IPs and steps: how far
+    the most deformed RVE was taken."""
     return float(np.sqrt(np.linalg.eigvalsh(np.swapaxes(F, -1, -2) @ F)[..., -1].max()))
 
 
-def band_rates(path, dataset, rate):
-    """(axial strain of each step after the first, largest rate of deformation over the IPs in that
-    step [1/s]) from @p dataset (F or F_nonlocal: steps x IPs x 4, row by row) of history.h5 @p path."""
-    with h5py.File(path, "r") as f:
-        F = f[dataset][:].reshape(f[dataset].shape[0], -1, 2, 2)
-        e = f["axial_strain"][:]
+def band_rates(F, rate):
+    """The largest rate of deformation [1/s] over the IPs in each step after the first of @p F
+    (steps x IPs x 2 x 2), the steps ROW of axial strain apart at nominal @p rate."""
     dF = np.diff(F, axis=0) @ np.linalg.inv(F[:-1])
     D = 0.5 * (dF + np.swapaxes(dF, -1, -2))
-    return e[1:], np.linalg.norm(D, axis=(-2, -1)).max(axis=1) / (ROW / rate)
-
-
-def ended(case):
-    """Whether @p case's run is over (reached 10 % or stopped): a run under way holds history.h5 open."""
-    c = analyse.curve(case)
-    return bool(c) and (es.reached_end(c) or sl.stopped(case))
+    return np.linalg.norm(D, axis=(-2, -1)).max(axis=1) / (ROW / rate)
 
 
 def measured():
@@ -76,17 +73,17 @@ def measured():
                 for k in es.MEMBERS:
                     case = es.case_name(fam, m, k, step)
                     path = os.path.join(analyse.runs, case, "history.h5")
-                    if not os.path.exists(path) or not ended(case):
+                    # a run under way holds history.h5 open: only runs that are over
+                    if not os.path.exists(path) or not es.is_over(case, analyse.curve(case), sl.stopped):
                         continue
-                    with h5py.File(path, "r") as f:
-                        datasets = [d for d in ("F", "F_nonlocal") if d in f]
-                    for d in datasets:
-                        e, r = band_rates(path, d, rate)
+                    strain, fields = read_history(path)
+                    e = strain[1:]
+                    for d, F in fields.items():
+                        r = band_rates(F, rate)
                         after = r[e > AFTER + 1e-9]
-                        rows.append({"case": case, "dataset": d, "steps": len(e) + 1, "last_axial_strain": f"{e[-1]:.6g}",
+                        rows.append({"case": case, "dataset": d, "steps": len(strain), "last_axial_strain": f"{e[-1]:.6g}",
                                      "median_after_6pc": f"{np.median(after):.4g}" if after.size else "nan",
-                                     "largest": f"{r.max():.4g}",
-                                     "largest_stretch": f"{largest_stretch(path, d):.4g}"})
+                                     "largest": f"{r.max():.4g}", "largest_stretch": f"{largest_stretch(F):.4g}"})
     return rows
 
 

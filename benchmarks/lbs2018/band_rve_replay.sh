@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Why the local 8x16 one-point run by slow loading stopped at 8.5 % (issue 37,
-# session 55; README, "Session 55: why the local 8x16 run stopped"): the RVE of
+# session 55; README, "Session 55: the local 8x16 stop and the band's rate"): the RVE of
 # its band IP 0 alone, along its own deformation path, at the macro run's pace
 # and at half of it, and the same RVE in isochoric pure shear and simple shear.
 #

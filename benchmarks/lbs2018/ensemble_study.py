@@ -81,9 +81,8 @@ def stored_curves(path=CURVES, step="_quarter", ended=None):
             v["axial_strain"].append(float(r["axial_strain"]))
             v["stress_ratio"].append(float(r["stress_ratio"]))
     names = [case_name(f, m, k, step) for f in FAMILIES for m, _ in MESHES for k in MEMBERS]
-    # Only runs that reached 10 %: a run still under way must not be stored as a member.
-    ran = {c: v for c, v in ((c, analyse.curve(c)) for c in names)
-           if v and (reached_end(v) or (ended is not None and ended(c)))}
+    # Only runs that are over: a run still under way must not be stored as a member.
+    ran = {c: v for c, v in ((c, analyse.curve(c)) for c in names) if is_over(c, v, ended)}
     if ran:
         out.update({c: {k: ran[c][k] for k in ("axial_strain", "stress_ratio")} for c in ran})
         with open(path, "w", newline="") as fh:
@@ -161,6 +160,12 @@ def print_widths(curves, widths):
 def reached_end(curve):
     """Whether @p curve (analyse.curve's dict) reached 10 % axial strain (a run just started has no rows)."""
     return bool(curve["axial_strain"]) and abs(curve["axial_strain"][-1] - 0.10) < 1e-6
+
+
+def is_over(case, curve, ended=None):
+    """Whether run @p case, whose summary.csv reads as @p curve (analyse.curve), is over: it reached
+    10 %, or @p ended(case) says it ended before (stored_curves)."""
+    return bool(curve) and (reached_end(curve) or (ended is not None and ended(case)))
 
 
 def finished(curves, c):

@@ -13,7 +13,9 @@
 # macro run's 5 ms (0.125 % at 0.25 /s) or in 10 ms; F moves linearly between
 # rows ('Table row time'). ip0_path_5ms_rounded: the same rows rounded to 10
 # significant digits (how sensitive the failure is to the path: README).
-# One rank each; output in runs/band_rve_replay/CASE/.
+# One rank each; output in runs/band_rve_replay/CASE/; the three IP 0 cases
+# write a particle dump after every row (CASE/particles/stepNNNN.*, for
+# frame_pinch.py).
 # Prints, per case, the last step rve.csv holds and the error, if any.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -51,15 +53,16 @@ g = -0.005 * np.arange(1, 101)
 np.savetxt(f"{sys.argv[1]}/simple_shear.txt", np.c_[1 + 0 * g, g, 0 * g, 1 + 0 * g], fmt="%.10g")
 EOF
 
-# case, table, start, row time [s]
+# case, table, start, row time [s], particle dumps every N rows (0: none)
 run_case() {
-  local name=$1 table=$2 start=$3 row_time=$4 dir="$out/$1"
+  local name=$1 table=$2 start=$3 row_time=$4 dumps=$5 dir="$out/$1"
   mkdir -p "$dir"
   local iso=""
   [[ $start == "isotropic stage" ]] && iso=$'  set Pressure        = 1.5e5\n  set Isotropic steps = 2'
   cat > "$dir/case.prm" <<EOF
 # band_rve_replay.sh: $name
 set Output directory = $dir
+set Particle dumps every = $dumps
 subsection RVE
   set Template       = $root/rve_templates/rve_setup_2d.liggghts
   set Packing        = $root/rve_templates/packings/lbs_ref
@@ -86,8 +89,8 @@ EOF
 }
 echo "| case | row time | last step in rve.csv | end |"
 echo "|---|---|---|---|"
-run_case ip0_path_5ms "$path" packing 0.005
-run_case ip0_path_5ms_rounded "$out/ip0_rounded.txt" packing 0.005
-run_case ip0_path_10ms "$path" packing 0.01
-run_case pure_shear_1_per_s "$out/pure_shear.txt" "isotropic stage" 0.005
-run_case simple_shear_1_per_s "$out/simple_shear.txt" "isotropic stage" 0.005
+run_case ip0_path_5ms "$path" packing 0.005 1
+run_case ip0_path_5ms_rounded "$out/ip0_rounded.txt" packing 0.005 1
+run_case ip0_path_10ms "$path" packing 0.01 1
+run_case pure_shear_1_per_s "$out/pure_shear.txt" "isotropic stage" 0.005 0
+run_case simple_shear_1_per_s "$out/simple_shear.txt" "isotropic stage" 0.005 0

@@ -321,6 +321,9 @@ private:
       sum = sum + per_particle[g[m]];
     return sum;
   }
+  /// No frame particle of @p images (frame indices; -1 entries skipped) has a force or torque.
+  template <class Indices>
+  bool untouched(const Indices& images) const;
   /// A servo correction of the frame's unknowns (step 4), then the frame's move to them.
   void apply_servo_correction();
   /// The servo correction alone: the gains, their adaptation and the integral action.

@@ -387,13 +387,39 @@ void FixRveServo<dim>::correct_servo()
   {
     const auto& g = frame_.groups[e];
     const int i = local_index(frame_.particles[g[0]].tag);
-    servo_.correct_group(e, group_sum(frame_force_, g), group_sum(frame_moment_, g), atom->rmass[i],
-                         atom->radius[i], dtv_, integral);
+    if (integral && untouched(g))
+      servo_.hold_group(e); // anti-windup (servo_controller.cpp)
+    else
+      servo_.correct_group(e, group_sum(frame_force_, g), group_sum(frame_moment_, g), atom->rmass[i],
+                           atom->radius[i], dtv_, integral);
   }
   const int ic = local_index(frame_.particles[frame_.corners[0]].tag);
   Rotation dmc{};
   for (int k : frame_.corners)
     dmc = dmc + frame_moment_[k];
-  servo_.correct_corner(dmc, atom->rmass[ic], atom->radius[ic], dtv_, integral);
+  if (integral && untouched(frame_.corners))
+    servo_.hold_corners();
+  else
+    servo_.correct_corner(dmc, atom->rmass[ic], atom->radius[ic], dtv_, integral);
   ++result_.servo_iterations;
+}
+
+// No image touches anything: the force and torque on each, contacts plus
+// the membrane's, are exactly zero (LIGGGHTS clears them every step).
+template <int dim>
+template <class Indices>
+bool FixRveServo<dim>::untouched(const Indices& images) const
+{
+  for (int q : images)
+  {
+    if (q < 0) // an unused entry of a 3D group
+      continue;
+    for (double x : frame_force_[q])
+      if (x != 0.0)
+        return false;
+    for (double x : frame_moment_[q])
+      if (x != 0.0)
+        return false;
+  }
+  return true;
 }

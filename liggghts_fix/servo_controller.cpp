@@ -22,13 +22,6 @@ void adapt(double& factor, double now, double before)
 {
   factor = now * before < 0.0 ? std::max(0.5 * factor, min_factor) : std::min(1.0, 1.2 * factor);
 }
-
-/// Every component of @p v is exactly zero (a group or the corners without a contact).
-template <class T>
-bool all_zero(const T& v)
-{
-  return std::all_of(v.begin(), v.end(), [](double x) { return x == 0.0; });
-}
 } // namespace
 
 template <int dim>
@@ -84,14 +77,6 @@ void ServoController<dim>::carry_drift(T& value, const T& before, T& drift)
   drift = m * drift + (1.0 - m) * move;
 }
 
-// Anti-windup of the integral action. A group none of whose images touches
-// anything carries exactly zero force and moment; its correction is then
-// zero, and move = drift, d <- d: it would coast at its last mean speed for
-// ever, through the packing and out of the cell. Such a group holds its
-// place instead: it forgets its drift. (lbs_ref, edge pair 27 along the path
-// of a band RVE: it lost its last contact at a principal stretch of 1.28
-// and drifted 1.5 mm per 5 ms row until inner particle 15 left through the
-// hole; benchmarks/lbs2018/README.md, session 56.)
 template <int dim>
 void ServoController<dim>::correct_group(std::size_t e, const Vector& da, const Rotation& dm,
                                          double M, double R, double dt, bool integral)
@@ -99,11 +84,6 @@ void ServoController<dim>::correct_group(std::size_t e, const Vector& da, const 
   const double dt2 = dt * dt;
   if (integral)
     size_drift();
-  if (integral && all_zero(da) && all_zero(dm))
-  {
-    drift_w[e] = Vector{};
-    drift_theta_pair[e] = Rotation{};
-  }
   const Vector w_before = w[e];
   const Rotation theta_before = theta_pair[e];
   Memory& mem = memory[e];
@@ -132,8 +112,6 @@ void ServoController<dim>::correct_corner(const Rotation& dm, double M, double R
 {
   const double dt2 = dt * dt;
   const Rotation before = theta_corner;
-  if (integral && all_zero(dm))
-    drift_theta_corner = Rotation{};
   for (std::size_t c = 0; c < dm.size(); ++c)
   {
     adapt(corner_memory.moment_factor[c], dm[c], corner_memory.last_dm[c]);
@@ -142,6 +120,30 @@ void ServoController<dim>::correct_corner(const Rotation& dm, double M, double R
   if (integral)
     carry_drift(theta_corner, before, drift_theta_corner);
   corner_memory.last_dm = dm;
+}
+
+// Anti-windup of the integral action. A group none of whose images touches
+// anything carries no force; its correction is zero, so with the drift
+// carried, move = d and d <- d: it would coast at its last mean speed for
+// ever, through the packing and out of the cell. It holds its place instead.
+// (lbs_ref, edge pair 27 along the path of a band RVE: it lost its last
+// contact at a principal stretch of 1.28 and drifted 1.5 mm per 5 ms row
+// until inner particle 15 left through the hole; benchmarks/lbs2018/
+// README.md, session 56.)
+template <int dim>
+void ServoController<dim>::hold_group(std::size_t e)
+{
+  if (e < drift_w.size())
+  {
+    drift_w[e] = Vector{};
+    drift_theta_pair[e] = Rotation{};
+  }
+}
+
+template <int dim>
+void ServoController<dim>::hold_corners()
+{
+  drift_theta_corner = Rotation{};
 }
 
 template class ServoController<2>;

@@ -17,7 +17,8 @@
  *  - integral action for timed solves (timed_servo integral): every move
  *    also carries the running mean of the recent moves (carry_drift), so a
  *    steady drift of the balanced fluctuations is followed without a
- *    steady imbalance.
+ *    steady imbalance; with anti-windup: a group without contact holds
+ *    still (hold_group) instead of coasting at its drift.
  *
  * @tparam dim 2 (rotations are angles) or 3 (rotation vectors).
  * Units: forces in N, moments in N m, masses in kg, radii in m, dt in s.
@@ -82,6 +83,12 @@ public:
                      double dt, bool integral);
   /// The same for the corners' common rotation, under their summed moment @p dm.
   void correct_corner(const Rotation& dm, double M, double R, double dt, bool integral);
+  /// Instead of a correction, for group @p e when none of its images touches
+  /// anything: it stays where it is and forgets its drift (anti-windup; with
+  /// the drift it would coast out of the cell).
+  void hold_group(std::size_t e);
+  /// The same for the corners' common rotation when no corner image touches anything.
+  void hold_corners();
 
 private:
   /**

@@ -2,7 +2,9 @@
 // LIGGGHTS: one correction against a hand-computed one, the adaptive gain
 // (halved on a sign change, recovering by 20 %, never below its floor) and
 // the integral action of timed solves, which follows a balanced place that
-// moves at a steady rate without the steady lag v/g of a proportional servo.
+// moves at a steady rate without the steady lag v/g of a proportional servo,
+// and its anti-windup: a group (or the corners) with no contact holds its
+// place (hold_group) instead of coasting at its drift.
 #include "check.h"
 #include "servo_controller.h"
 
@@ -67,6 +69,43 @@ int main()
   const double proportional = imbalance_after(400, false), integral = imbalance_after(400, true);
   c.near("proportional: steady imbalance k v/g = 0.2 N", proportional, -0.2, 1e-6);
   c.less("integral: no steady imbalance (|net force| in N)", std::abs(integral), 1e-6);
+
+  // Anti-windup: a group that followed a moving balance (drift v per check)
+  // and then loses every contact must hold still; with the drift carried it
+  // moved v per check for ever (lbs_ref's edge pair 27 left the cell so).
+  {
+    Servo3 servo;
+    servo.reset(1);
+    const double k = 1e8, v = 1e-9;
+    for (int i = 1; i <= 400; ++i)
+      servo.correct_group(0, {{k * (servo.w[0][0] - v * i), 0.0, 0.0}}, {{1e-3 * i, 0.0, 0.0}}, M, R,
+                          dt, true);
+    c.near("anti-windup: the drift has built up to v per check (m)", servo.drift_w[0][0], v, 1e-12);
+    Servo3 coasting = servo; // not held: the windup this guards against
+    for (int i = 0; i < 100; ++i)
+      coasting.correct_group(0, {}, {}, M, R, dt, true);
+    c.near("without the hold a group with no force coasts at its drift (m)",
+           coasting.w[0][0] - servo.w[0][0], 100 * v, 1e-12);
+    const auto w = servo.w[0];
+    const auto theta = servo.theta_pair[0];
+    servo.hold_group(0);
+    for (int i = 0; i < 100; ++i)
+      servo.correct_group(0, {}, {}, M, R, dt, true);
+    c.near("held, a group without contact keeps its place (m)", servo.w[0][0], w[0], 0.0);
+    c.near("and its rotation (rad)", servo.theta_pair[0][0], theta[0], 0.0);
+    c.near("held: its drift is forgotten (m)", servo.drift_w[0][0], 0.0, 0.0);
+    servo.correct_group(0, {{k * 1e-9, 0.0, 0.0}}, {}, M, R, dt, true);
+    c.less("anti-windup: a contact again moves it against the force", servo.w[0][0], w[0]);
+
+    for (int i = 1; i <= 50; ++i)
+      servo.correct_corner({{1e-3, 0.0, 0.0}}, M, R, dt, true);
+    const double corner = servo.theta_corner[0];
+    servo.hold_corners();
+    for (int i = 0; i < 50; ++i)
+      servo.correct_corner({}, M, R, dt, true);
+    c.near("anti-windup: corners held, then without a moment, keep their rotation (rad)",
+           servo.theta_corner[0], corner, 0.0);
+  }
 
   s.zero_fluctuations();
   c.near("zero_fluctuations: w", s.w[1][0], 0.0, 0.0);

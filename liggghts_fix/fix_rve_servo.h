@@ -58,7 +58,10 @@
  *                              the recent ones, so a steady drift of the balanced
  *                              fluctuations is followed without a steady imbalance) or
  *                              proportional (issue 18; the frame lags by an amount that
- *                              grows with the loading rate). Default integral
+ *                              grows with the loading rate). Default integral. A group
+ *                              none of whose images touches anything holds still and
+ *                              forgets its drift (anti-windup: else it coasts out of the
+ *                              cell; servo_controller.cpp)
  *
  * `fix_modify ID F f11 f12 f21 f22` (3D: nine values) starts a new solve under a new F;
  * `fix_modify ID max_steps N` changes the step budget (not kept in restarts). The

@@ -4,11 +4,12 @@
 # its band IP 0 alone, along its own deformation path, at the macro run's pace
 # and at half of it, and the same RVE in isochoric pure shear and simple shear.
 #
-# Usage: benchmarks/lbs2018/band_rve_replay.sh [--build DIR]
+# Usage: benchmarks/lbs2018/band_rve_replay.sh [--build DIR] [--refresh-path]
 #
 # The path is results/band_rve_path_ip0.txt: F of IP 0 in each of the 78 load
-# steps of runs/mesh_8x16_op_quarter_sl0.25/history.h5 (tests/history_to_table.py;
-# refreshed from runs/ when that run is there, so the replay needs no runs/),
+# steps of session 55's runs/mesh_8x16_op_quarter_sl0.25/history.h5
+# (tests/history_to_table.py; rewritten from that run's history.h5 only with
+# --refresh-path: a later run of that case is another path),
 # plus four rows that continue its last increment. Each row is reached in the
 # macro run's 5 ms (0.125 % at 0.25 /s) or in 10 ms; F moves linearly between
 # rows ('Table row time'). ip0_path_5ms_rounded: the same rows rounded to 10
@@ -21,8 +22,15 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 build="$root/build"
-if [[ $# -eq 2 && $1 == --build ]]; then build="$(realpath -m "$2")"
-elif [[ $# -ne 0 ]]; then sed -n '2,/^set -euo/{/^#/p}' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 2; fi
+refresh=no
+while [[ $# -gt 0 ]]; do
+  case $1 in
+    --build) [[ $# -ge 2 ]] || { echo "band_rve_replay.sh: --build needs a directory" >&2; exit 2; }
+             build="$(realpath -m "$2")"; shift 2 ;;
+    --refresh-path) refresh=yes; shift ;;
+    *) sed -n '2,/^set -euo/{/^#/p}' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 2 ;;
+  esac
+done
 rve="$build/dealii_app/rve_driver/fe2dem-rve"
 [[ -x $rve ]] || { echo "band_rve_replay.sh: no $rve (build first: cmake --build build)" >&2; exit 1; }
 python=/usr/bin/python3
@@ -30,7 +38,8 @@ path="$here/results/band_rve_path_ip0.txt"
 history="$here/runs/mesh_8x16_op_quarter_sl0.25/history.h5"
 out="$here/runs/band_rve_replay"
 mkdir -p "$out"
-if [[ -f $history ]]; then
+if [[ $refresh == yes ]]; then
+  [[ -f $history ]] || { echo "band_rve_replay.sh: --refresh-path: no $history" >&2; exit 1; }
   "$python" "$root/tests/history_to_table.py" "$history" 0 "$out/ip0.txt" >/dev/null
   "$python" - "$out/ip0.txt" "$path" <<'EOF'
 import sys
@@ -42,7 +51,7 @@ np.savetxt(sys.argv[2], rows, fmt="%.17g",
                   "then 4 rows continuing the last increment (band_rve_replay.sh)")
 EOF
 fi
-[[ -f $path ]] || { echo "band_rve_replay.sh: neither $history nor $path" >&2; exit 1; }
+[[ -f $path ]] || { echo "band_rve_replay.sh: no $path (--refresh-path makes it from $history)" >&2; exit 1; }
 "$python" - "$out" "$path" <<'EOF'
 import sys
 import numpy as np

@@ -10,13 +10,17 @@ rounded to 10 digits, which holds to row 82) and prints, per row:
   cell are stretched (the frame particles sit at F X plus a fluctuation);
 - the largest frame-frame overlap on the left/right edges and on the
   bottom/top edges, over the smaller radius;
+- the largest gap between neighbours along the frame (surface to surface,
+  in mm) and which two; a gap wider than an inner particle is a hole;
 - for inner particles 15 and 129 (the ones lost in the replay and in the
   macro runs): their reference-cell x coordinate (F^-1 (x - x_corner)) over
   the cell side, the number of frame particles they touch and the largest
   overlap over the smaller radius with a frame particle (and which).
 Writes results/frame_pinch.csv and results/frame_pinch.png (the right edge
-around both particles in the last dump before the failure and in the
-rounded replay's same row).
+around both particles in the full-precision replay's last dump, and in the
+rounded replay's same row). results/frame_pinch_windup.png is that figure
+made with the servo before its anti-windup (session 56, before 2a8c723),
+when the full-precision replay failed in row 71.
 """
 import csv
 import os
@@ -34,17 +38,27 @@ import plot_particles  # noqa: E402
 
 WATCHED = (15, 129)
 CASES = ("ip0_path_5ms", "ip0_path_5ms_rounded")
-FRAME_FILE = os.path.join(here, "..", "..", "rve_templates", "packings", "lbs_ref.frame.txt")
+PACKING = os.path.join(here, "..", "..", "rve_templates", "packings", "lbs_ref")
+FRAME_FILE = PACKING + ".frame.txt"
+RMIN = next(float(l.split()[3]) for l in open(PACKING + ".vars") if l.startswith("variable rve_Rmin "))
 
 
 def frame_roles():
-    """rve id -> role (corner_*, bottom, right, top, left) of lbs_ref's frame."""
+    """rve id -> role (corner_*, bottom, right, top, left) of lbs_ref's frame, in frame order."""
     roles = {}
     for line in open(FRAME_FILE):
         if not line.startswith("#"):
             f = line.split()
             roles[int(f[0])] = f[1]
     return roles
+
+
+def largest_gap(particles, order):
+    """(gap in m, id, id) of the widest surface gap between neighbours along the closed frame."""
+    def gap(a, b):
+        pa, pb = particles[a], particles[b]
+        return np.hypot(pa["x"] - pb["x"], pa["y"] - pb["y"]) - pa["radius"] - pb["radius"]
+    return max((gap(a, b), a, b) for a, b in zip(order, order[1:] + order[:1]))
 
 
 def read_F(case_dir):
@@ -64,8 +78,9 @@ def row_measures(prefix, F, roles):
     corner = particles[min(i for i, r in roles.items() if r == "corner_00")]
     Finv = np.linalg.inv(F)
     vertical = ("left", "right")
+    gap, a, b = largest_gap(particles, list(roles))
     m = {"F_e1": np.linalg.norm(F[:, 0]), "F_e2": np.linalg.norm(F[:, 1]),
-         "ff_vertical": 0.0, "ff_horizontal": 0.0}
+         "ff_vertical": 0.0, "ff_horizontal": 0.0, "gap_mm": gap * 1e3, "gap_between": f"{a}-{b}"}
     for w in WATCHED:
         p = particles[w]
         xi = Finv @ np.array([p["x"] - corner["x"], p["y"] - corner["y"]])
@@ -120,16 +135,18 @@ def main():
         w.writeheader()
         for r in rows:
             w.writerow({k: (f"{v:.4g}" if isinstance(v, float) else v) for k, v in r.items()})
-    print("| case | row | abs(F e1) | abs(F e2) | frame-frame overlap, left/right edges | bottom/top |"
+    print("| case | row | abs(F e1) | abs(F e2) | frame-frame overlap, left/right edges | bottom/top "
+          "| largest gap along the frame, mm (between) |"
           + "".join(f" {w}: x/L, frame contacts, largest overlap (with) |" for w in WATCHED))
-    print("|---|---|---|---|---|---|" + "---|" * len(WATCHED))
+    print("|---|---|---|---|---|---|---|" + "---|" * len(WATCHED))
     for r in rows:
-        if r["row"] in (0, 20, 40, 50, 60, 65, 68, 69, 70, 75, 80, 82) or r["row"] == last[r["case"]]:
+        if r["row"] in (0, 40, 60, 66, 67, 70, 75, 80, 82) or r["row"] == last[r["case"]]:
             cells = "".join(f" {r[f'p{w}_xi']:.3f}, {r[f'p{w}_frame_contacts']}, "
                             f"{r[f'p{w}_frame_overlap']:.2f} ({r[f'p{w}_partner']}) |" for w in WATCHED)
             print(f"| {r['case']} | {r['row']} | {r['F_e1']:.3f} | {r['F_e2']:.3f} | "
-                  f"{r['ff_vertical']:.2f} | {r['ff_horizontal']:.2f} |{cells}")
-    failed = last[CASES[0]]
+                  f"{r['ff_vertical']:.2f} | {r['ff_horizontal']:.2f} | {r['gap_mm']:.3f} ({r['gap_between']}) |"
+                  f"{cells}")
+    failed = min(last[CASES[0]], 70)
     fig, axes = plt.subplots(2, 2, figsize=(9, 9))
     for col, case in enumerate(CASES):
         prefix = os.path.join(runs, case, "particles", f"step{failed:04d}")
@@ -139,6 +156,9 @@ def main():
                  f"{case}, row {failed}: around inner particle {w}")
     png = os.path.join(here, "results", "frame_pinch.png")
     fig.savefig(png, dpi=130, bbox_inches="tight")
+    widest = max(rows, key=lambda r: r["gap_mm"])
+    print(f"widest gap of all rows: {widest['gap_mm']:.3f} mm ({widest['gap_between']}, {widest['case']} "
+          f"row {widest['row']}); smallest inner diameter {2e3 * RMIN:.3f} mm")
     print(out_csv)
     print(png)
 

@@ -65,6 +65,7 @@ EOF
 # case, table, start, row time [s], particle dumps every N rows (0: none)
 run_case() {
   local name=$1 table=$2 start=$3 row_time=$4 dumps=$5 dir="$out/$1"
+  rm -rf "$dir/particles"  # a shorter rerun must not leave an older run's later dumps
   mkdir -p "$dir"
   local iso=""
   [[ $start == "isotropic stage" ]] && iso=$'  set Pressure        = 1.5e5\n  set Isotropic steps = 2'

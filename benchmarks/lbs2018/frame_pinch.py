@@ -4,8 +4,9 @@
 Usage: frame_pinch.py [RUNS_DIR]   (default: runs/band_rve_replay next to this file)
 
 Reads the particle dumps band_rve_replay.sh writes after every row of the
-two 5 ms replays of IP 0's path (full precision, which fails in row 71, and
-rounded to 10 digits, which holds to row 82) and prints, per row:
+three replays of IP 0's path (5 ms a row at full precision and rounded to
+10 digits, and 10 ms a row; before the servo's anti-windup the first failed
+in row 71, the second held to row 82) and prints, per row:
 - |F e1|, |F e2|: how much the bottom/top and the left/right edges of the
   cell are stretched (the frame particles sit at F X plus a fluctuation);
 - the largest frame-frame overlap on the left/right edges and on the
@@ -16,7 +17,10 @@ rounded to 10 digits, which holds to row 82) and prints, per row:
   macro runs): their reference-cell x coordinate (F^-1 (x - x_corner)) over
   the cell side, the number of frame particles they touch and the largest
   overlap over the smaller radius with a frame particle (and which).
-Writes results/frame_pinch.csv and results/frame_pinch.png (the right edge
+and, for each case's last dump, the holes: neighbours along the frame
+further apart than an inner particle's diameter with that particle's centre
+within its radius of the line between them (the frame membrane's band), and
+the particle's contacts. Writes results/frame_pinch.csv and results/frame_pinch.png (the right edge
 around both particles in the full-precision replay's last dump, and in the
 rounded replay's same row). results/frame_pinch_windup.png is that figure
 made with the servo before its anti-windup (session 56, before 2a8c723),
@@ -37,7 +41,8 @@ sys.path.insert(0, os.path.join(here, "..", "..", "scripts"))
 import plot_particles  # noqa: E402
 
 WATCHED = (15, 129)
-CASES = ("ip0_path_5ms", "ip0_path_5ms_rounded")
+CASES = ("ip0_path_5ms", "ip0_path_5ms_rounded", "ip0_path_10ms")
+FIGURE_CASES = CASES[:2]  # the figure's two columns
 PACKING = os.path.join(here, "..", "..", "rve_templates", "packings", "lbs_ref")
 FRAME_FILE = PACKING + ".frame.txt"
 RMIN = next(float(l.split()[3]) for l in open(PACKING + ".vars") if l.startswith("variable rve_Rmin "))
@@ -59,6 +64,26 @@ def largest_gap(particles, order):
         pa, pb = particles[a], particles[b]
         return np.hypot(pa["x"] - pb["x"], pa["y"] - pb["y"]) - pa["radius"] - pb["radius"]
     return max((gap(a, b), a, b) for a, b in zip(order, order[1:] + order[:1]))
+
+
+def holes(prefix, roles):
+    """[(inner id, its diameter, frame a, frame b, gap)] (m) of the dump @p prefix: inner particles
+    in the membrane band of two neighbours along the frame whose gap is wider than their diameter."""
+    particles = {int(p["id"]): p for p in plot_particles.read(prefix + ".particles")}
+    order = list(roles)
+    found = []
+    for a, b in zip(order, order[1:] + order[:1]):
+        pa, pb = particles[a], particles[b]
+        xa, e = np.array([pa["x"], pa["y"]]), np.array([pb["x"] - pa["x"], pb["y"] - pa["y"]])
+        gap = np.linalg.norm(e) - pa["radius"] - pb["radius"]
+        for i, p in particles.items():
+            if i in roles or 2 * p["radius"] >= gap:
+                continue
+            d = np.array([p["x"], p["y"]]) - xa
+            t = d @ e / (e @ e)
+            if 0 < t < 1 and np.linalg.norm(d - t * e) < p["radius"]:
+                found.append((i, 2 * p["radius"], a, b, gap))
+    return found
 
 
 def read_F(case_dir):
@@ -148,7 +173,7 @@ def main():
                   f"{cells}")
     failed = min(last[CASES[0]], 70)
     fig, axes = plt.subplots(2, 2, figsize=(9, 9))
-    for col, case in enumerate(CASES):
+    for col, case in enumerate(FIGURE_CASES):
         prefix = os.path.join(runs, case, "particles", f"step{failed:04d}")
         particles = {int(p["id"]): p for p in plot_particles.read(prefix + ".particles")}
         for row, w in enumerate(WATCHED):
@@ -159,6 +184,14 @@ def main():
     widest = max(rows, key=lambda r: r["gap_mm"])
     print(f"widest gap of all rows: {widest['gap_mm']:.3f} mm ({widest['gap_between']}, {widest['case']} "
           f"row {widest['row']}); smallest inner diameter {2e3 * RMIN:.3f} mm")
+    for case in CASES:
+        prefix = os.path.join(runs, case, "particles", f"step{last[case]:04d}")
+        contacts = plot_particles.read(prefix + ".contacts")
+        for i, diameter, a, b, gap in holes(prefix, roles):
+            touching = sorted(int(c["id2"]) if int(c["id1"]) == i else int(c["id1"]) for c in contacts
+                              if i in (int(c["id1"]), int(c["id2"])))
+            print(f"{case}, row {last[case]}: inner particle {i} ({diameter * 1e3:.3f} mm) in the "
+                  f"{gap * 1e3:.3f} mm gap between frame particles {a} and {b}; touches {touching or 'nothing'}")
     print(out_csv)
     print(png)
 

@@ -33,10 +33,17 @@ and results/load_step_curves.csv (the relaxed steps), and prints:
   ensembles) over 7.5-8.5 % and 7.5-10 %, kept in
   results/slow_loading_widths.csv;
 and draws results/slow_loading.png.
+
+Only runs made with the timed servo's anti-windup (session 56, from commit
+ANTI_WINDUP on; results/runs.csv names each run's commit) enter: before it a
+frame pair without contact coasted out of the cell, which ended four local
+runs early (session 55's curves: results/slow_loading_curves_s55.csv). The
+runs left out are listed first.
 """
 import csv
 import datetime
 import os
+import subprocess
 import sys
 
 import matplotlib
@@ -59,6 +66,21 @@ WIDTHS = os.path.join(analyse.results, "slow_loading_widths.csv")
 # the half-share width's intervals of axial strain: band_study's 7.5-10 % and, like for like with
 # the local 8x16 run that stopped at 8.5 %, 7.5-8.5 %
 WIDTH_INTERVALS = [(0.075, 0.085), (0.075, 0.10)]
+ANTI_WINDUP = "2a8c723"  # the first commit with the timed servo's anti-windup
+
+
+def before_anti_windup(case):
+    """Whether results/runs.csv dates @p case's last run to a commit without the anti-windup (or has
+    no row for it)."""
+    row = analyse.run_info().get(case)
+    if not row:
+        return True
+    ancestor = subprocess.run(["git", "merge-base", "--is-ancestor", ANTI_WINDUP, row["commit"]],
+                              cwd=os.path.dirname(os.path.abspath(__file__)), capture_output=True)
+    if ancestor.returncode not in (0, 1):
+        sys.exit(f"slow_loading_study.py: git cannot place commit {row['commit']} of {case} "
+                 f"(results/runs.csv): {ancestor.stderr.decode().strip()}")
+    return ancestor.returncode == 1
 
 
 def stopped(case):
@@ -281,12 +303,16 @@ def main():
     curves = ls.curves_at_every_step()
     for step, _, _ in RATES:  # with the runs that stopped early (an RVE failed), to their stop
         curves.update(es.stored_curves(CURVES, step, ended=stopped))
+    old = sorted(c for c in curves if "_sl" in c and before_anti_windup(c))
+    print(f"left out, run before the anti-windup ({ANTI_WINDUP}): {', '.join(old) or 'none'}")
+    for c in old:
+        del curves[c]
     plot(curves)
     print_runs(curves)
     print_member_spread(curves)
     print_rates_and_schemes(curves)
     print_mesh_spread(curves)
-    print_widths(stored_widths(curves))
+    print_widths({key: w for key, w in stored_widths(curves).items() if key[0] in curves})
     return 0
 
 

@@ -58,24 +58,27 @@ def frame_roles():
     return roles
 
 
+def frame_gaps(particles, order):
+    """(gap in m, id, id) of each pair of neighbours along the closed frame @p order, surface to
+    surface."""
+    for a, b in zip(order, order[1:] + order[:1]):
+        pa, pb = particles[a], particles[b]
+        yield np.hypot(pa["x"] - pb["x"], pa["y"] - pb["y"]) - pa["radius"] - pb["radius"], a, b
+
+
 def largest_gap(particles, order):
     """(gap in m, id, id) of the widest surface gap between neighbours along the closed frame."""
-    def gap(a, b):
-        pa, pb = particles[a], particles[b]
-        return np.hypot(pa["x"] - pb["x"], pa["y"] - pb["y"]) - pa["radius"] - pb["radius"]
-    return max((gap(a, b), a, b) for a, b in zip(order, order[1:] + order[:1]))
+    return max(frame_gaps(particles, order))
 
 
 def holes(prefix, roles):
     """[(inner id, its diameter, frame a, frame b, gap)] (m) of the dump @p prefix: inner particles
     in the membrane band of two neighbours along the frame whose gap is wider than their diameter."""
     particles = {int(p["id"]): p for p in plot_particles.read(prefix + ".particles")}
-    order = list(roles)
     found = []
-    for a, b in zip(order, order[1:] + order[:1]):
-        pa, pb = particles[a], particles[b]
-        xa, e = np.array([pa["x"], pa["y"]]), np.array([pb["x"] - pa["x"], pb["y"] - pa["y"]])
-        gap = np.linalg.norm(e) - pa["radius"] - pb["radius"]
+    for gap, a, b in frame_gaps(particles, list(roles)):
+        xa = np.array([particles[a]["x"], particles[a]["y"]])
+        e = np.array([particles[b]["x"], particles[b]["y"]]) - xa
         for i, p in particles.items():
             if i in roles or 2 * p["radius"] >= gap:
                 continue

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Reproduces the [LBS] study of physics.md §3.1 (the paper's §4) with FE2DEM.
 #
-# Usage: benchmarks/lbs2018/run.sh [--build DIR] [--np N] [--mts20] CASE... | all
+# Usage: benchmarks/lbs2018/run.sh [--build DIR] [--np N] [--mts20] [--checkpoint N] CASE... | all
 #   mesh_1x1 mesh_1x2 mesh_2x4 mesh_4x8   mesh convergence (mesh_2x4 is also
 #                                         the reference of every study:
 #                                         friction 0.4, free rotation, lbs_ref)
@@ -38,7 +38,10 @@
 # of the multiscale runs (default 2; the DNS runs on one core), --mts20 the
 # multiscale cases with the study's settings before issue 19 (at most 20 DEM
 # steps per iteration, secant frequency estimate, no predictor, Inner start =
-# keep) into mts20/ instead (the DNS cases are the same in both).
+# keep) into mts20/ instead (the DNS cases are the same in both),
+# --checkpoint N a checkpoint of the multiscale cases every N load steps
+# (lbs2018.prm: none; not result-defining: fe2dem --resume runs/CASE/case.prm
+# continues a stopped case).
 #
 # Raw output goes to runs/CASE/ (not committed); the wall time, core count,
 # date, commit and machine of each case go to results/runs.csv. analyse.py
@@ -48,7 +51,7 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 source "$root/benchmarks/common.sh"
-build="$root/build" np=2 mts20=0
+build="$root/build" np=2 mts20=0 checkpoint=0
 all_cases=(mesh_1x1 mesh_1x2 mesh_2x4 mesh_4x8 mesh_4x8_steps22 dns_A dns_B dns_B_tol1e-3 dns_B_tol1e-4
            mu0.2 mu0.6 locked a005 a008 nonlocal_1x1 nonlocal_1x2 nonlocal_2x4 nonlocal_4x8)
 
@@ -60,6 +63,9 @@ while [[ $# -gt 0 ]]; do
     --np) [[ $# -ge 2 && "$2" =~ ^[1-9][0-9]*$ ]] || { echo "run.sh: --np needs a positive integer" >&2; exit 2; }
           np=$2; shift 2 ;;
     --mts20) mts20=1; shift ;;
+    --checkpoint) [[ $# -ge 2 && "$2" =~ ^[1-9][0-9]*$ ]] ||
+                    { echo "run.sh: --checkpoint needs a positive number of load steps" >&2; exit 2; }
+                  checkpoint=$2; shift 2 ;;
     all) cases+=("${all_cases[@]}"); shift ;;
     -h|--help) usage ;;
     *) [[ " ${all_cases[*]} " == *" $1 "* || $1 =~ ^(mesh|nonlocal)_(1x1|1x2|2x4|4x8|8x16)(_op)?(_R[0-9.]+)?(_a[0-9.]+)?(_le[0-9.e]*)?(_half|_quarter|_eighth|_sixteenth)?(_sl[0-9.]+)?(_p[1-9][0-9]*)?$ ]] ||
@@ -180,7 +186,8 @@ run_case() {
       "$build/dealii_app/rve_driver/fe2dem-rve" "$prm" > "$out/run.log" 2>&1 && status=0 || true ;;
     *)
       prm="$out/case.prm"
-      { cat lbs2018.prm; overrides "$c"; [[ $mts20 == 0 ]] || mts20_overrides; } > "$prm"
+      { cat lbs2018.prm; overrides "$c"; [[ $mts20 == 0 ]] || mts20_overrides
+        [[ $checkpoint == 0 ]] || printf 'subsection Checkpoint\n  set Every = %s\nend\n' "$checkpoint"; } > "$prm"
       absolute_paths "$prm"
       cores=$np
       echo "run.sh: $c: fe2dem on $np ranks"

@@ -72,4 +72,11 @@ double CentralDifferenceIntegrator::kinetic_energy(const dealii::Vector<double>&
     e += 0.5 * mass_[i] * (v[i] * v[i] - 0.25 * dt * dt * a[i] * a[i]);
   return e;
 }
+
+void CentralDifferenceIntegrator::count_reversals(const dealii::Vector<double>& v, const dealii::Vector<double>& a,
+                                                  const double dt, std::vector<unsigned int>& count)
+{
+  for (dealii::types::global_dof_index i = 0; i < v.size(); ++i)
+    count[i] += v[i] * v[i] < 0.25 * dt * dt * a[i] * a[i];
+}
 } // namespace fe2dem::macro

@@ -22,6 +22,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <map>
+#include <vector>
 
 namespace fe2dem::macro
 {
@@ -56,6 +57,13 @@ public:
    * where v M v / 2 would oscillate by O((omega dt)^2).
    */
   double kinetic_energy(const dealii::Vector<double>& v, const dealii::Vector<double>& a, double dt) const;
+  /**
+   * Adds 1 to @p count[i] for every dof i whose velocity reverses over this
+   * step, v^{n-1/2} v^{n+1/2} < 0 (its term of kinetic_energy() is negative),
+   * from @p v = v^n and @p a = a^n. @pre @p count has one entry per dof.
+   */
+  static void count_reversals(const dealii::Vector<double>& v, const dealii::Vector<double>& a, double dt,
+                              std::vector<unsigned int>& count);
 
 private:
   const Dynamics& prm_;

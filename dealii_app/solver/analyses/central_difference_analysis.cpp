@@ -1,7 +1,13 @@
 #include "analyses/central_difference_analysis.h"
 
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/component_mask.h>
+#include <deal.II/fe/mapping_q1.h>
+
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 
@@ -228,7 +234,7 @@ typename Analysis<dim>::StepResult CentralDifferenceAnalysis<dim>::solve_step(do
     system_.record_energy(kinetic);
     system_.commit_increments(); // corotational and nonlocal increments per time step
     time_ = t;
-    watch_stability(kinetic);
+    watch_stability(kinetic, dt);
   }
   return {n, fraction};
 }
@@ -249,8 +255,12 @@ typename Analysis<dim>::StepResult CentralDifferenceAnalysis<dim>::solve_step(do
 // lateral stresses of -31 ... -914 kPa under 416 kPa faces and no other
 // sign of trouble (benchmarks/lsyf2016).
 template <int dim>
-void CentralDifferenceAnalysis<dim>::watch_stability(const double kinetic)
+void CentralDifferenceAnalysis<dim>::watch_stability(const double kinetic, const double dt)
 {
+  const MacroFields& x = std::as_const(system_).fields();
+  if (reversals_.size() != x.velocity.size())
+    reversals_.assign(x.velocity.size(), 0);
+  CentralDifferenceIntegrator::count_reversals(x.velocity, x.acceleration, dt, reversals_);
   ++window_steps_;
   window_negative_ += kinetic < 0.0;
   if (window_steps_ < stability_window)
@@ -258,12 +268,15 @@ void CentralDifferenceAnalysis<dim>::watch_stability(const double kinetic)
   const unsigned int negative = window_negative_;
   window_steps_ = window_negative_ = 0;
   if (negative < unstable_fraction * stability_window)
+  {
+    std::fill(reversals_.begin(), reversals_.end(), 0);
     return;
+  }
   std::ostringstream msg;
   msg << "load step " << system_.load_step().step << ": the macro time step is unstable: the kinetic "
       << "energy of central differences was negative at " << negative << " of the last "
       << stability_window << " time steps (velocities that change sign at every step: modes above "
-      << "the stability limit grow); the results would be meaningless. ";
+      << "the stability limit grow); the results would be meaningless. " << where_velocities_reverse() << ". ";
   if (prm_.material.type == MaterialParameters::Type::rve)
     msg << "With RVEs the step rests on 'Stability modulus' = " << prm_.material.stability_modulus
         << " of subsection Material, which is below the RVEs' stiffness over one macro step: raise it "
@@ -273,6 +286,43 @@ void CentralDifferenceAnalysis<dim>::watch_stability(const double kinetic)
   else
     msg << "Lower 'Time step' or 'Safety factor' of subsection Dynamics";
   throw std::runtime_error(msg.str());
+}
+
+// Where the modes above the limit live: the dofs whose velocity reversed
+// most often in the window, by node (undeformed coordinates) and component.
+// Every rank holds the whole macro problem, so every rank names the same dofs.
+template <int dim>
+std::string CentralDifferenceAnalysis<dim>::where_velocities_reverse() const
+{
+  const DoFHandler<dim>& dofs = system_.dof_handler();
+  std::vector<types::global_dof_index> order(reversals_.size());
+  std::iota(order.begin(), order.end(), types::global_dof_index{0});
+  const std::size_t shown = std::min<std::size_t>(3, order.size());
+  std::partial_sort(order.begin(), order.begin() + shown, order.end(),
+                    [&](auto i, auto j) { return reversals_[i] != reversals_[j] ? reversals_[i] > reversals_[j] : i < j; });
+  const auto often = std::count_if(reversals_.begin(), reversals_.end(), [](unsigned int c) {
+    return c >= unstable_fraction * stability_window;
+  });
+  std::map<types::global_dof_index, Point<dim>> position;
+  DoFTools::map_dofs_to_support_points(MappingQ1<dim>(), dofs, position);
+  std::vector<unsigned int> component(order.size());
+  for (unsigned int c = 0; c < dim; ++c)
+  {
+    ComponentMask mask(dim, false);
+    mask.set(c, true);
+    for (const auto i : DoFTools::extract_dofs(dofs, mask))
+      component[i] = c;
+  }
+  std::ostringstream msg;
+  msg << often << " dofs reversed their velocity at " << unstable_fraction * stability_window
+      << " or more of those steps; most often";
+  for (std::size_t k = 0; k < shown; ++k)
+  {
+    const auto i = order[k];
+    msg << (k ? "," : "") << " u_" << "xyz"[component[i]] << " of the node at (" << position[i] << ") m ("
+        << reversals_[i] << " steps)";
+  }
+  return msg.str();
 }
 
 template <int dim>

@@ -23,7 +23,9 @@
 #include "analyses/central_difference.h"
 #include "parameters/macro_parameters.h"
 
+#include <string>
 #include <utility>
+#include <vector>
 
 namespace fe2dem::macro
 {
@@ -75,11 +77,15 @@ private:
   std::pair<double, double> stage_time() const;
   /**
    * Counts the time steps with a negative kinetic energy @p kinetic in
-   * windows of stability_window steps. @throws std::runtime_error naming
-   * the setting to change if at least unstable_fraction of a window had one:
-   * the step is above the stability limit (the .cpp says why this test).
+   * windows of stability_window steps, and per dof the steps of length @p dt
+   * at which its velocity reversed. @throws std::runtime_error naming the
+   * setting to change and the dofs that reversed most often if at least
+   * unstable_fraction of a window had a negative kinetic energy: the step
+   * is above the stability limit (the .cpp says why this test).
    */
-  void watch_stability(double kinetic);
+  void watch_stability(double kinetic, double dt);
+  /// For the message of watch_stability(): the dofs whose velocity reversed most often in the window.
+  std::string where_velocities_reverse() const;
   static constexpr unsigned int stability_window = 50;
   static constexpr double unstable_fraction = 0.2;
   /// The macro step with RVEs: whole RVE checks (see the constructor).
@@ -102,5 +108,7 @@ private:
   /// watch_stability(): time steps, and those with a negative kinetic energy, in the current window
   /// (not checkpointed: it only ever stops a run)
   unsigned int window_steps_ = 0, window_negative_ = 0;
+  /// per dof: the time steps of the current window at which its velocity reversed
+  std::vector<unsigned int> reversals_;
 };
 } // namespace fe2dem::macro

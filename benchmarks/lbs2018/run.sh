@@ -19,6 +19,9 @@
 #                                         "Local against nonlocal")
 #   ..._slRATE (before _pK, e.g.          slow loading at the nominal strain rate RATE /s
 #   mesh_2x4_quarter_sl0.25)              (fe2dem's default with RVEs) instead of relaxed steps
+#   ..._smM (after _slRATE, e.g.          'Stability modulus' = M N/m instead of 1e7 (slow
+#   mesh_8x16_op_quarter_sl0.25_sm2e7)    loading's numerical mass, the one-point hourglass
+#                                         stiffness; README, session 58)
 #   ..._pK (after every other part, e.g.  the lateral pressure 1.5e5 (1 + K 1e-6) N/m:
 #   nonlocal_4x8_le_quarter_p1)           an ensemble member that differs from the
 #                                         case in the sixth digit of one load
@@ -68,8 +71,8 @@ while [[ $# -gt 0 ]]; do
                   checkpoint=$2; shift 2 ;;
     all) cases+=("${all_cases[@]}"); shift ;;
     -h|--help) usage ;;
-    *) [[ " ${all_cases[*]} " == *" $1 "* || $1 =~ ^(mesh|nonlocal)_(1x1|1x2|2x4|4x8|8x16)(_op)?(_R[0-9.]+)?(_a[0-9.]+)?(_le[0-9.e]*)?(_half|_quarter|_eighth|_sixteenth)?(_sl[0-9.]+)?(_p[1-9][0-9]*)?$ ]] ||
-         { echo "run.sh: unknown case '$1' (cases: ${all_cases[*]}, mesh_MESH[_op], nonlocal_MESH[_op][_RN][_aA][_le[E]][_half|_quarter|_eighth|_sixteenth][_slRATE][_pK], all)" >&2; exit 2; }
+    *) [[ " ${all_cases[*]} " == *" $1 "* || $1 =~ ^(mesh|nonlocal)_(1x1|1x2|2x4|4x8|8x16)(_op)?(_R[0-9.]+)?(_a[0-9.]+)?(_le[0-9.e]*)?(_half|_quarter|_eighth|_sixteenth)?(_sl[0-9.]+)?(_sm[0-9.e]+)?(_p[1-9][0-9]*)?$ ]] ||
+         { echo "run.sh: unknown case '$1' (cases: ${all_cases[*]}, mesh_MESH[_op], nonlocal_MESH[_op][_RN][_aA][_le[E]][_half|_quarter|_eighth|_sixteenth][_slRATE][_smM][_pK], all)" >&2; exit 2; }
        cases+=("$1"); shift ;;
   esac
 done
@@ -102,6 +105,9 @@ overrides() {
       # rows (every step lasts its strain over RATE); the DR settings of lbs2018.prm do not apply
       [[ ! $1 =~ _sl([0-9.]+) ]] ||
         printf 'subsection Dynamics\n  set Quasi-static scheme = slow loading\n  set Strain rate = %s\nend\nsubsection Material\n  set DEM steps per iteration = 0\nend\n' "${BASH_REMATCH[1]}"
+      # _smM: 'Stability modulus' = M (the macro step's stability with RVEs, session 58)
+      [[ ! $1 =~ _sm([0-9.e]+) ]] ||
+        printf 'subsection Material\n  set Stability modulus = %s\nend\n' "${BASH_REMATCH[1]}"
       # _pK: the lateral pressure 1 + K ppm higher, an ensemble member (the curves after the peak
       # part by rounding alone: README, "The band width over three meshes, and what rounding does")
       [[ ! $1 =~ _p([0-9]+)$ ]] ||

@@ -32,6 +32,9 @@ and results/load_step_curves.csv (the relaxed steps), and prints:
 - every run's half-share band width (band_width.py, the measure of the
   ensembles) over 7.5-8.5 % and 7.5-10 %, kept in
   results/slow_loading_widths.csv;
+- every run at 'Stability modulus' 2e7 (run.sh ..._sm2e7, session 58)
+  against the same member at 1e7, beside members K = 0 and 1 at 1e7
+  against each other on the same rows;
 and draws results/slow_loading.png.
 
 Only runs made with the timed servo's anti-windup (session 56, from commit
@@ -67,6 +70,8 @@ WIDTHS = os.path.join(analyse.results, "slow_loading_widths.csv")
 # the local 8x16 run that stopped at 8.5 %, 7.5-8.5 %
 WIDTH_INTERVALS = [(0.075, 0.085), (0.075, 0.10)]
 ANTI_WINDUP = "2a8c723"  # the first commit with the timed servo's anti-windup
+# session 58: run.sh's _sm2e7, 'Stability modulus' 2e7 instead of lbs2018.prm's 1e7 at 0.25 /s
+STABILITY = "_quarter_sl0.25_sm2e7"
 
 
 def before_anti_windup(case):
@@ -170,6 +175,28 @@ def print_rates_and_schemes(curves):
                     if len(ks) >= 2:
                         print(f"| {fam[0]} | {m} | slow {label} | relaxed {slabel}, mean of K = "
                               f"{', '.join(map(str, ks))} | {compare(c, ls.mean_of(curves, fam, m, ks, step))} |")
+
+
+def print_stability_modulus(curves):
+    """Each run at 'Stability modulus' 2e7 (STABILITY) against the same member at 1e7 (0.25 /s), on
+    the rows both have, beside members K = 0 and 1 at 1e7 against each other on those rows: what the
+    numerical mass and the hourglass stiffness move, against what rounding moves."""
+    base = RATES[0][0]
+    print("\n| family | mesh | K | 2e7 reached | to | 2e7 against 1e7: largest difference 0.5-5 % | spread "
+          "after the peak: mean | largest | 1e7, K = 0 against K = 1: 0.5-5 % | mean | largest |\n"
+          + "|---" * 11 + "|")
+    for fam in ls.FAMILIES:
+        for m, _ in es.MESHES:
+            pair = [curves.get(es.case_name(fam, m, k, base)) for k in (0, 1)]
+            for k in es.MEMBERS:
+                c, b = curves.get(es.case_name(fam, m, k, STABILITY)), curves.get(es.case_name(fam, m, k, base))
+                if not (c and b):
+                    continue
+                end = min(c["axial_strain"][-1], b["axial_strain"][-1])
+                rounding = (compare(up_to(pair[0], end), up_to(pair[1], end))
+                            if all(pair) and min(p["axial_strain"][-1] for p in pair) >= end - 1e-9 else "- | - | -")
+                print(f"| {fam[0]} | {m} | {k} | {100 * c['axial_strain'][-1]:.4g} % | {100 * end:.4g} % "
+                      f"| {compare(up_to(c, end), up_to(b, end))} | {rounding} |")
 
 
 def up_to(curve, end):
@@ -301,7 +328,7 @@ def plot(curves):
 
 def main():
     curves = ls.curves_at_every_step()
-    for step, _, _ in RATES:  # with the runs that stopped early (an RVE failed), to their stop
+    for step in [r[0] for r in RATES] + [STABILITY]:  # with the runs that stopped early, to their stop
         curves.update(es.stored_curves(CURVES, step, ended=stopped))
     old = sorted(c for c in curves if "_sl" in c and before_anti_windup(c))
     print(f"left out, run before the anti-windup ({ANTI_WINDUP}): {', '.join(old) or 'none'}")
@@ -313,6 +340,7 @@ def main():
     print_rates_and_schemes(curves)
     print_mesh_spread(curves)
     print_widths({key: w for key, w in stored_widths(curves).items() if key[0] in curves})
+    print_stability_modulus(curves)
     return 0
 
 

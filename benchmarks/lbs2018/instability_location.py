@@ -10,6 +10,9 @@ increment of F (band_width.ip_field) over the last SPAN rows (default 4:
 0.5 % axial strain in 0.125 % steps) at the IPs of the elements around the
 node (IPs closer than one element size to it along both axes) against the largest
 over the mesh: a node in the band has an element above half the largest.
+Then the frame membrane's contacts per row (history.h5 membrane_steps,
+mean over the last 20 rows) of the band's IPs (above half the largest
+increment) against the others, and the IPs with 35 or more.
 """
 import os
 import re
@@ -54,7 +57,7 @@ def main():
     span = int(sys.argv[2]) if len(sys.argv) == 3 else 4
     history = os.path.join(RUNS, case, "history.h5")
     with h5py.File(history, "r") as h:
-        rows, strain = len(h["step"]), h["axial_strain"][()]
+        rows, strain, membrane = len(h["step"]), h["axial_strain"][()], h["membrane_steps"][()]
     x, gamma = bw.ip_field(history, rows - 1 - span, rows - 1)
     h_x, h_y = element_size(os.path.join(RUNS, case, "case.prm"))
     print(f"{case}: shear strain increment from {100 * strain[rows - 1 - span]:.4g} % to "
@@ -67,6 +70,12 @@ def main():
         share = gamma[near].max() / gamma.max()
         print(f"| u_{c} | ({1e3 * nx:.4g}, {1e3 * ny:.4g}) | {steps} | {share:.2f} | "
               f"{'yes' if share > 0.5 else 'no'} |")
+    band, m = gamma > 0.5 * gamma.max(), membrane[-20:].mean(axis=0)
+    print(f"membrane contacts per row, last 20 rows: {band.sum()} IPs in the band {m[band].mean():.1f} "
+          f"(median {np.median(m[band]):.3g}), {(~band).sum()} others {m[~band].mean():.1f} "
+          f"(median {np.median(m[~band]):.3g}); 35 or more: "
+          + ", ".join(f"IP {i} ({1e3 * x[i, 0]:.4g}, {1e3 * x[i, 1]:.4g}) mm {m[i]:.0f}"
+                      f"{' in the band' if band[i] else ''}" for i in np.where(m >= 35)[0]))
 
 
 if __name__ == "__main__":

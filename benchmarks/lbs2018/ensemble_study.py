@@ -193,9 +193,12 @@ def drop_at(curve):
 
 
 def summary(pts):
-    """(peak at, mean, largest, mean from LATE, largest from LATE) of spread_after_peak's points."""
+    """(peak at, mean, largest, mean from LATE, largest from LATE) of spread_after_peak's points (the
+    last two nan if the points end before LATE)."""
     e, s = np.array(pts).T
     late = s[e >= LATE - 1e-9]
+    if not late.size:
+        return e[0], s.mean(), s.max(), float("nan"), float("nan")
     return e[0], s.mean(), s.max(), late.mean(), late.max()
 
 

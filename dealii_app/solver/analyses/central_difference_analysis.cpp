@@ -298,8 +298,9 @@ std::string CentralDifferenceAnalysis<dim>::where_velocities_reverse() const
   std::vector<types::global_dof_index> order(reversals_.size());
   std::iota(order.begin(), order.end(), types::global_dof_index{0});
   const std::size_t shown = std::min<std::size_t>(3, order.size());
-  std::partial_sort(order.begin(), order.begin() + shown, order.end(),
-                    [&](auto i, auto j) { return reversals_[i] != reversals_[j] ? reversals_[i] > reversals_[j] : i < j; });
+  std::partial_sort(order.begin(), order.begin() + shown, order.end(), [&](auto i, auto j) {
+    return reversals_[i] != reversals_[j] ? reversals_[i] > reversals_[j] : i < j; // most first, then by dof
+  });
   const auto often = std::count_if(reversals_.begin(), reversals_.end(), [](unsigned int c) {
     return c >= unstable_fraction * stability_window;
   });

@@ -113,6 +113,7 @@ private:
   void stop_if_signalled() const override;
   Material<dim>& material() override { return *material_; }
   const dealii::DoFHandler<dim>& dof_handler() const override { return dof_handler_; }
+  const DofMap<dim>& dof_map() const override { return dof_map_; }
   LoadStepIndex load_step() const override;
   const dealii::Vector<double>& last_step_increment() const override { return step_increment_; }
   double largest_step_strain() const override { return load_case_->largest_step_strain(); }

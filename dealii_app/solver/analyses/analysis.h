@@ -19,6 +19,7 @@
  */
 #pragma once
 
+#include "loading/load_case.h"
 #include "materials/material.h"
 
 #include <deal.II/base/conditional_ostream.h>
@@ -84,6 +85,8 @@ public:
   virtual void stop_if_signalled() const = 0;
   virtual Material<dim>& material() = 0;
   virtual const dealii::DoFHandler<dim>& dof_handler() const = 0;
+  /// Every dof's node and component (built once for the run).
+  virtual const DofMap<dim>& dof_map() const = 0;
   virtual LoadStepIndex load_step() const = 0;
   /// The displacement change over the last converged load step.
   virtual const dealii::Vector<double>& last_step_increment() const = 0;

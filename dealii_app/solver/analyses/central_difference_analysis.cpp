@@ -1,12 +1,7 @@
 #include "analyses/central_difference_analysis.h"
 
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/component_mask.h>
-#include <deal.II/fe/mapping_q1.h>
-
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -294,7 +289,7 @@ void CentralDifferenceAnalysis<dim>::watch_stability(const double kinetic, const
 template <int dim>
 std::string CentralDifferenceAnalysis<dim>::where_velocities_reverse() const
 {
-  const DoFHandler<dim>& dofs = system_.dof_handler();
+  const DofMap<dim>& nodes = system_.dof_map();
   std::vector<types::global_dof_index> order(reversals_.size());
   std::iota(order.begin(), order.end(), types::global_dof_index{0});
   const std::size_t shown = std::min<std::size_t>(3, order.size());
@@ -304,24 +299,14 @@ std::string CentralDifferenceAnalysis<dim>::where_velocities_reverse() const
   const auto often = std::count_if(reversals_.begin(), reversals_.end(), [](unsigned int c) {
     return c >= unstable_fraction * stability_window;
   });
-  std::map<types::global_dof_index, Point<dim>> position;
-  DoFTools::map_dofs_to_support_points(MappingQ1<dim>(), dofs, position);
-  std::vector<unsigned int> component(order.size());
-  for (unsigned int c = 0; c < dim; ++c)
-  {
-    ComponentMask mask(dim, false);
-    mask.set(c, true);
-    for (const auto i : DoFTools::extract_dofs(dofs, mask))
-      component[i] = c;
-  }
   std::ostringstream msg;
   msg << often << " dofs reversed their velocity at " << unstable_fraction * stability_window
       << " or more of those steps; most often";
   for (std::size_t k = 0; k < shown; ++k)
   {
     const auto i = order[k];
-    msg << (k ? "," : "") << " u_" << "xyz"[component[i]] << " of the node at (" << position[i] << ") m ("
-        << reversals_[i] << " steps)";
+    msg << (k ? "," : "") << " u_" << "xyz"[nodes.component[i]] << " of the node at (" << nodes.position[i]
+        << ") m (" << reversals_[i] << " steps)";
   }
   return msg.str();
 }
